@@ -1,0 +1,1 @@
+//! Proc-macro generating blade-sparse, straight-line geometric-algebra types.
