@@ -8,6 +8,7 @@ extern crate self as ga_core;
 
 pub mod ops;
 pub mod scalar;
+pub mod symbolic;
 
 pub use approx;
 pub use nalgebra;
