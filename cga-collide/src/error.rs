@@ -1,0 +1,39 @@
+//! Typed errors of the bounded-shape constructors.
+
+use thiserror::Error;
+
+/// Why a bounded shape could not be built.
+///
+/// Every variant names the constructor argument that was rejected and carries the offending
+/// value, so the message says what was wrong and where.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum GeometryError {
+    /// A coordinate of a point argument is NaN or infinite.
+    #[error("{shape}::new: argument `{argument}` has a non-finite {axis} coordinate ({value})")]
+    NonFiniteCoordinate {
+        /// The shape being built (`"Segment"`, `"Triangle"`, `"Sphere"`, `"Ball"`).
+        shape: &'static str,
+        /// The argument name, e.g. `"a"` or `"centre"`.
+        argument: &'static str,
+        /// `"x"`, `"y"` or `"z"`.
+        axis: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// A radius is NaN or infinite.
+    #[error("{shape}::new: radius is not finite ({value})")]
+    NonFiniteRadius {
+        /// The shape being built.
+        shape: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// A radius is negative.
+    #[error("{shape}::new: radius is negative ({value})")]
+    NegativeRadius {
+        /// The shape being built.
+        shape: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+}
