@@ -53,10 +53,15 @@ pub trait Regressive<Rhs = Self> {
 }
 
 /// Versor application `V X V⁻¹`, projected onto the type of `X` (exact for versors, which
-/// preserve grade).
+/// preserve grade). Needs division; see [`SandwichUnit`] for the ring-only unit-versor form.
 pub trait Sandwich<X> {
-    /// `V X V⁻¹`, or `None` when `V Ṽ` has a zero scalar part (`V` not invertible as a versor).
+    /// `V X V⁻¹`, or `None` when `⟨V Ṽ⟩₀` is zero (`V` not invertible as a versor).
     fn sandwich(&self, x: &X) -> Option<X>;
-    /// `V X Ṽ` without normalisation: the fast path for unit versors (`V Ṽ = 1`).
+}
+
+/// `V X Ṽ` projected onto the type of `X`: versor application for unit versors (`V Ṽ = 1`),
+/// with no division, so it runs on any ring (symbolic polynomials included).
+pub trait SandwichUnit<X> {
+    /// `V X Ṽ`, keeping only the blades of `X`'s type.
     fn sandwich_unit(&self, x: &X) -> X;
 }

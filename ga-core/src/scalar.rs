@@ -51,6 +51,15 @@ pub trait Field: Ring + Div<Output = Self> {
             Some(Self::one() / self.clone())
         }
     }
+    /// How good a pivot this value is in Gaussian elimination: larger is better, `0.0` only for
+    /// zero. The default treats every nonzero value alike (right for exact types).
+    fn pivot_score(&self) -> f64 {
+        if self.is_zero() {
+            0.0
+        } else {
+            1.0
+        }
+    }
 }
 
 /// An ordered [`Field`] approximating (or exactly representing part of) the real numbers.
@@ -92,7 +101,12 @@ macro_rules! impl_float {
                 *self == 0.0
             }
         }
-        impl Field for $t {}
+        impl Field for $t {
+            #[inline]
+            fn pivot_score(&self) -> f64 {
+                <$t>::abs(*self) as f64
+            }
+        }
         impl Real for $t {
             #[inline(always)]
             fn sqrt(&self) -> Self {

@@ -1,1 +1,43 @@
-//! Proc-macro generating blade-sparse, straight-line geometric-algebra types.
+//! `ga_macros::algebra!` turns one algebra declaration into Rust types whose products are
+//! blade-sparse, straight-line code generic over the coefficient type.
+//!
+//! The macro is organised in three stages: [`parse`](parse) reads the declaration (syn),
+//! [`model`](model) builds the algebra (blade products, result-type inference), and
+//! [`emit`](emit) writes the tokens (quote). The generated code names the runtime crate as
+//! `::ga_core`, so a crate using the macro depends on `ga-core` too.
+//!
+//! ```
+//! ga_macros::algebra! {
+//!     name: plane,
+//!     signature: [+1, +1],
+//!     types: { Vector: grade 1, Rotor: grades 0 2 },
+//! }
+//! let a = Vector::new(1.0, 0.0);
+//! let b = Vector::new(0.0, 2.0);
+//! let r: Rotor<f64> = a * b; // 2e12
+//! assert_eq!(r, Rotor::new(0.0, 2.0));
+//! assert_eq!(r.to_string(), "2e12");
+//! ```
+//!
+//! The declaration: `name` (a label for docs), `signature` (`+1`, `-1` or `0` per generator,
+//! at most 6), optional `basis` names (default `e1 ... en`), `types` (each by `grade K`,
+//! `grades K L ...` or an explicit blade list `[1, e12, e13]`), and optional `dense` (the name
+//! of the all-blades type, default `Multivector`). See the crate README for what is generated.
+#![forbid(unsafe_code)]
+
+mod blade;
+mod emit;
+mod model;
+mod parse;
+
+use proc_macro::TokenStream;
+
+/// Generates the types and products of one geometric algebra; see the crate documentation.
+#[proc_macro]
+pub fn algebra(input: TokenStream) -> TokenStream {
+    let declaration = syn::parse_macro_input!(input as parse::Declaration);
+    match model::Algebra::from_declaration(declaration) {
+        Ok(algebra) => emit::emit(&algebra).into(),
+        Err(e) => e.to_compile_error().into(),
+    }
+}

@@ -1,0 +1,670 @@
+//! Emitting Rust tokens from the algebra model: one struct per type, straight-line products
+//! generic over the scalar, operator impls, conversions, formatting and `approx` support.
+
+use std::collections::BTreeMap;
+
+use proc_macro2::{Ident, Literal, TokenStream};
+use quote::{format_ident, quote};
+
+use crate::blade::{self, Blade};
+use crate::model::{Algebra, Output, Product, Term, TypeModel};
+
+/// Everything the declaration expands to.
+pub fn emit(alg: &Algebra) -> TokenStream {
+    let mut items = vec![emit_module_items(alg)];
+    for (i, t) in alg.types.iter().enumerate() {
+        items.push(emit_type(alg, i, t));
+    }
+    for a in 0..alg.types.len() {
+        for b in 0..alg.types.len() {
+            items.push(emit_pair(alg, a, b));
+        }
+    }
+    quote! { #(#items)* }
+}
+
+fn ring() -> TokenStream {
+    quote!(::ga_core::scalar::Ring)
+}
+
+fn field_ident(alg: &Algebra, b: Blade) -> Ident {
+    format_ident!("{}", alg.field_names[b as usize])
+}
+
+/// `Name<T>` or `T`.
+fn out_ty(alg: &Algebra, out: Output) -> TokenStream {
+    match out {
+        Output::Scalar => quote!(T),
+        Output::Type(i) => {
+            let name = &alg.types[i].name;
+            quote!(#name<T>)
+        }
+    }
+}
+
+/// A value of `out` whose blades come from `exprs` (missing blades are zero).
+fn construct(alg: &Algebra, out: Output, mut exprs: BTreeMap<Blade, TokenStream>) -> TokenStream {
+    let ring = ring();
+    match out {
+        Output::Scalar => exprs
+            .remove(&0)
+            .unwrap_or_else(|| quote!(<T as #ring>::zero())),
+        Output::Type(i) => {
+            let t = &alg.types[i];
+            let name = &t.name;
+            let fields = t.blades.iter().map(|&b| {
+                let f = field_ident(alg, b);
+                let e = exprs
+                    .remove(&b)
+                    .unwrap_or_else(|| quote!(<T as #ring>::zero()));
+                quote!(#f: #e)
+            });
+            quote!(#name { #(#fields),* })
+        }
+    }
+}
+
+/// `x1 - x2 + x3`: a flat left-to-right sum, so the float evaluation order is the written one.
+fn signed_sum(terms: Vec<(i32, TokenStream)>) -> TokenStream {
+    let mut out = TokenStream::new();
+    for (k, (sign, t)) in terms.into_iter().enumerate() {
+        out = match (k, sign < 0) {
+            (0, false) => t,
+            (0, true) => quote!(-(#t)),
+            (_, false) => quote!(#out + #t),
+            (_, true) => quote!(#out - #t),
+        };
+    }
+    out
+}
+
+/// Access to a blade of an operand: a field, or the operand itself when it is a bare `T`.
+fn access(alg: &Algebra, operand: &TokenStream, out: Output, b: Blade) -> TokenStream {
+    match out {
+        Output::Scalar => quote!(#operand.clone()),
+        Output::Type(_) => {
+            let f = field_ident(alg, b);
+            quote!(#operand.#f.clone())
+        }
+    }
+}
+
+fn bilinear_body(
+    alg: &Algebra,
+    outputs: &[(Blade, Vec<Term>)],
+    output: Output,
+    lhs: (&TokenStream, Output),
+    rhs: (&TokenStream, Output),
+) -> TokenStream {
+    let exprs = outputs
+        .iter()
+        .filter(|(_, terms)| !terms.is_empty())
+        .map(|(o, terms)| {
+            let products = terms
+                .iter()
+                .map(|t| {
+                    let a = access(alg, lhs.0, lhs.1, t.lhs);
+                    let b = access(alg, rhs.0, rhs.1, t.rhs);
+                    (t.sign, quote!(#a * #b))
+                })
+                .collect();
+            (*o, signed_sum(products))
+        })
+        .collect();
+    construct(alg, output, exprs)
+}
+
+fn emit_module_items(alg: &Algebra) -> TokenStream {
+    let n = alg.n();
+    let nb = 1usize << n;
+    let sig = alg
+        .signature
+        .iter()
+        .map(|&s| Literal::i8_unsuffixed(s as i8));
+    let basis = &alg.basis;
+    let names = alg
+        .canonical
+        .iter()
+        .map(|&b| alg.blade_names[b as usize].clone());
+    let label = alg.module.to_string();
+    let sig_doc = format!("Squares of the generators of `{label}`, in basis order.");
+    let ring = ring();
+    let blade_fns = alg.canonical.iter().skip(1).map(|&b| {
+        let out = alg.resolve(1u64 << b);
+        let ty = out_ty(alg, out);
+        let name = format_ident!("{}", alg.field_names[b as usize]);
+        let mut exprs = BTreeMap::new();
+        exprs.insert(b, quote!(<T as #ring>::one()));
+        let value = construct(alg, out, exprs);
+        let doc = format!("The basis blade `{}`.", alg.blade_names[b as usize]);
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #name<T: #ring>() -> #ty { #value }
+        }
+    });
+    quote! {
+        #[doc = #sig_doc]
+        pub const SIGNATURE: [i8; #n] = [#(#sig),*];
+        /// Names of the generators, in basis order.
+        pub const BASIS: [&str; #n] = [#(#basis),*];
+        /// Names of all blades in canonical order (grade, then lexicographic on indices).
+        pub const BLADE_NAMES: [&str; #nb] = [#(#names),*];
+        #(#blade_fns)*
+    }
+}
+
+fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
+    let ring = ring();
+    let name = &t.name;
+    let fields: Vec<Ident> = t.blades.iter().map(|&b| field_ident(alg, b)).collect();
+    let names: Vec<String> = t
+        .blades
+        .iter()
+        .map(|&b| alg.blade_names[b as usize].clone())
+        .collect();
+    let count = t.blades.len();
+    let attrs = &t.attrs;
+    let auto_doc = if t.is_dense {
+        format!(
+            "A general multivector of `{}`: all {count} blades, in canonical order.",
+            alg.module
+        )
+    } else {
+        format!(
+            "A multivector of `{}` with the blades `{}`.",
+            alg.module,
+            names.join(", ")
+        )
+    };
+    let field_docs = names.iter().map(|n| format!("Coefficient of `{n}`."));
+    let zero = quote!(<T as #ring>::zero());
+
+    let unary_signs = |f: fn(Blade) -> i32| {
+        let exprs = t.blades.iter().map(|&b| {
+            let fi = field_ident(alg, b);
+            if f(b) < 0 {
+                quote!(#fi: -self.#fi.clone())
+            } else {
+                quote!(#fi: self.#fi.clone())
+            }
+        });
+        quote!(#name { #(#exprs),* })
+    };
+    let reverse = unary_signs(blade::reverse_sign);
+    let involution = unary_signs(blade::involution_sign);
+    let conjugate = unary_signs(blade::conjugate_sign);
+
+    let blade_map_fn = |fname: Ident, doc: &str, f: &dyn Fn(Blade) -> (i32, Blade)| {
+        let map = alg.blade_map(&t.blades, f);
+        let ty = out_ty(alg, map.output);
+        let exprs = map
+            .entries
+            .iter()
+            .map(|&(o, s, b)| {
+                let fi = field_ident(alg, b);
+                let e = if s < 0 {
+                    quote!(-self.#fi.clone())
+                } else {
+                    quote!(self.#fi.clone())
+                };
+                (o, e)
+            })
+            .collect();
+        let value = construct(alg, map.output, exprs);
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #fname(&self) -> #ty { #value }
+        }
+    };
+    let dual_doc = if alg.degenerate {
+        "The dual: the right complement (the signature is degenerate, so `I` has no inverse)."
+    } else {
+        "The dual `A I⁻¹`."
+    };
+    let undual_doc = if alg.degenerate {
+        "The undual: the left complement, inverse of [`dual`](Self::dual)."
+    } else {
+        "The undual `A I`, inverse of [`dual`](Self::dual)."
+    };
+    let dual = blade_map_fn(format_ident!("dual"), dual_doc, &|b| alg.dual_blade(b));
+    let undual = blade_map_fn(format_ident!("undual"), undual_doc, &|b| {
+        alg.undual_blade(b)
+    });
+    let dual_ty = out_ty(alg, alg.blade_map(&t.blades, |b| alg.dual_blade(b)).output);
+
+    let grades = t.blades.iter().map(|&b| {
+        let fi = field_ident(alg, b);
+        let g = blade::grade(b);
+        quote!(#fi: if k == #g { self.#fi.clone() } else { #zero })
+    });
+    let norm_terms: Vec<(i32, TokenStream)> = alg
+        .norm_squared_terms(&t.blades)
+        .into_iter()
+        .map(|(s, b)| {
+            let fi = field_ident(alg, b);
+            (s, quote!(self.#fi.clone() * self.#fi.clone()))
+        })
+        .collect();
+    let norm = if norm_terms.is_empty() {
+        zero.clone()
+    } else {
+        signed_sum(norm_terms)
+    };
+
+    let dense_items = if t.is_dense {
+        let coeffs: Vec<Ident> = (0..count).map(|i| format_ident!("c{i}")).collect();
+        quote! {
+            impl<T> #name<T> {
+                /// Builds a multivector from its coefficients in canonical blade order.
+                #[inline]
+                pub fn from_coefficients(coefficients: [T; #count]) -> Self {
+                    let [#(#coeffs),*] = coefficients;
+                    #name { #(#fields: #coeffs),* }
+                }
+                /// The coefficients in canonical blade order.
+                #[inline]
+                pub fn into_coefficients(self) -> [T; #count] {
+                    [#(self.#fields),*]
+                }
+            }
+            impl<T: Clone> #name<T> {
+                /// The coefficients in canonical blade order.
+                #[inline]
+                pub fn coefficients(&self) -> [T; #count] {
+                    [#(self.#fields.clone()),*]
+                }
+            }
+            impl<T: ::ga_core::scalar::Field> #name<T> {
+                /// The inverse of a general multivector (not only versors), by exact Gaussian
+                /// elimination on its left-multiplication matrix; `None` when it is singular.
+                /// Slow compared with [`inverse`](Self::inverse); exact for exact scalars.
+                pub fn general_inverse(&self) -> Option<Self> {
+                    let columns: ::std::vec::Vec<[T; #count]> = (0..#count)
+                        .map(|j| {
+                            let mut e: [T; #count] = ::core::array::from_fn(|_| #zero);
+                            e[j] = <T as #ring>::one();
+                            let basis = Self::from_coefficients(e);
+                            ::ga_core::ops::Geometric::geometric(self, &basis).into_coefficients()
+                        })
+                        .collect();
+                    let solution = ::ga_core::linalg::solve_columns(&columns, 0)?;
+                    let array: [T; #count] = solution.try_into().ok()?;
+                    Some(Self::from_coefficients(array))
+                }
+            }
+        }
+    } else {
+        let dense = &alg.types[alg.dense()].name;
+        quote! {
+            impl<T: #ring> From<#name<T>> for #dense<T> {
+                #[inline]
+                fn from(v: #name<T>) -> Self {
+                    let mut m = #dense::<T>::zero();
+                    #(m.#fields = v.#fields;)*
+                    m
+                }
+            }
+            impl<T: #ring> #name<T> {
+                /// The projection of a general multivector onto this type's blades (the other
+                /// blades are dropped).
+                #[inline]
+                pub fn from_multivector(m: &#dense<T>) -> Self {
+                    #name { #(#fields: m.#fields.clone()),* }
+                }
+            }
+        }
+    };
+    let subset_conversions = alg.types.iter().enumerate().filter_map(|(j, other)| {
+        if j == index || other.is_dense || t.set & other.set != t.set {
+            return None;
+        }
+        let oname = &other.name;
+        let assigns = other.blades.iter().map(|&b| {
+            let fi = field_ident(alg, b);
+            if t.contains(b) {
+                quote!(#fi: v.#fi)
+            } else {
+                quote!(#fi: #zero)
+            }
+        });
+        Some(quote! {
+            impl<T: #ring> From<#name<T>> for #oname<T> {
+                #[inline]
+                fn from(v: #name<T>) -> Self { #oname { #(#assigns),* } }
+            }
+        })
+    });
+    let fmt_terms: Vec<TokenStream> = fields
+        .iter()
+        .zip(&names)
+        .map(|(f, n)| quote!((&self.#f, #n)))
+        .collect();
+    let abs_eq = fields
+        .iter()
+        .map(|f| quote!(self.#f.abs_diff_eq(&other.#f, epsilon.clone())));
+    let rel_eq = fields
+        .iter()
+        .map(|f| quote!(self.#f.relative_eq(&other.#f, epsilon.clone(), max_relative.clone())));
+    let ulps_eq = fields
+        .iter()
+        .map(|f| quote!(self.#f.ulps_eq(&other.#f, epsilon.clone(), max_ulps)));
+
+    quote! {
+        #(#attrs)*
+        #[doc = #auto_doc]
+        #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        pub struct #name<T> {
+            #(#[doc = #field_docs] pub #fields: T,)*
+        }
+
+        impl<T> #name<T> {
+            /// Canonical names of this type's blades, in field order (`1` is the scalar).
+            pub const BLADES: [&'static str; #count] = [#(#names),*];
+            /// Builds a value from its coefficients in canonical blade order.
+            #[allow(clippy::too_many_arguments)]
+            #[inline]
+            pub const fn new(#(#fields: T),*) -> Self {
+                #name { #(#fields),* }
+            }
+        }
+
+        impl<T: #ring> #name<T> {
+            /// The zero value.
+            #[inline]
+            pub fn zero() -> Self {
+                #name { #(#fields: #zero),* }
+            }
+            /// The reverse `Ã` (order of factors reversed).
+            #[inline]
+            pub fn reverse(&self) -> Self { #reverse }
+            /// The grade involution `Â` (odd grades negated).
+            #[inline]
+            pub fn grade_involution(&self) -> Self { #involution }
+            /// The Clifford conjugate `Ā` (reverse of the grade involution).
+            #[inline]
+            pub fn conjugate(&self) -> Self { #conjugate }
+            #dual
+            #undual
+            /// The grade-`k` part (all other grades zeroed).
+            #[inline]
+            pub fn grade(&self, k: usize) -> Self {
+                #name { #(#grades),* }
+            }
+            /// `⟨A Ã⟩₀`; may be negative or zero in non-Euclidean signatures.
+            #[inline]
+            pub fn norm_squared(&self) -> T { #norm }
+            /// Every coefficient multiplied by `s`.
+            #[inline]
+            pub fn scale(&self, s: &T) -> Self {
+                #name { #(#fields: self.#fields.clone() * s.clone()),* }
+            }
+        }
+
+        impl<T: ::ga_core::scalar::Field> #name<T> {
+            /// The versor inverse `Ã / ⟨A Ã⟩₀`: exact for blades and versors; `None` when
+            /// `⟨A Ã⟩₀` is zero. For general multivectors use the dense type's
+            /// `general_inverse`.
+            #[inline]
+            pub fn inverse(&self) -> Option<Self> {
+                let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
+                Some(self.reverse().scale(&inv))
+            }
+        }
+
+        impl<T: #ring> Default for #name<T> {
+            #[inline]
+            fn default() -> Self { Self::zero() }
+        }
+
+        impl<T: #ring> ::core::ops::Neg for #name<T> {
+            type Output = Self;
+            #[inline]
+            fn neg(self) -> Self { #name { #(#fields: -self.#fields),* } }
+        }
+        impl<T: #ring> ::core::ops::Neg for &#name<T> {
+            type Output = #name<T>;
+            #[inline]
+            fn neg(self) -> #name<T> { #name { #(#fields: -self.#fields.clone()),* } }
+        }
+        impl<T: #ring> ::core::ops::Not for #name<T> {
+            type Output = #dual_ty;
+            /// The dual.
+            #[inline]
+            fn not(self) -> #dual_ty { self.dual() }
+        }
+        impl<T: #ring> ::core::ops::Not for &#name<T> {
+            type Output = #dual_ty;
+            /// The dual.
+            #[inline]
+            fn not(self) -> #dual_ty { self.dual() }
+        }
+        impl<T: #ring> ::core::ops::Mul<T> for #name<T> {
+            type Output = Self;
+            #[inline]
+            fn mul(self, s: T) -> Self { #name { #(#fields: self.#fields * s.clone()),* } }
+        }
+        impl ::core::ops::Mul<#name<f64>> for f64 {
+            type Output = #name<f64>;
+            #[inline]
+            fn mul(self, v: #name<f64>) -> #name<f64> { v * self }
+        }
+        impl ::core::ops::Mul<#name<f32>> for f32 {
+            type Output = #name<f32>;
+            #[inline]
+            fn mul(self, v: #name<f32>) -> #name<f32> { v * self }
+        }
+
+        impl<T: #ring + ::core::fmt::Display> ::core::fmt::Display for #name<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                ::ga_core::format::write_terms(f, &[#(#fmt_terms),*], false)
+            }
+        }
+        impl<T: #ring + ::core::fmt::Debug> ::core::fmt::Debug for #name<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                ::ga_core::format::write_terms_debug(f, &[#(#fmt_terms),*])
+            }
+        }
+
+        impl<T: ::ga_core::approx::AbsDiffEq> ::ga_core::approx::AbsDiffEq for #name<T>
+        where
+            T::Epsilon: Clone,
+        {
+            type Epsilon = T::Epsilon;
+            fn default_epsilon() -> T::Epsilon { T::default_epsilon() }
+            fn abs_diff_eq(&self, other: &Self, epsilon: T::Epsilon) -> bool {
+                #(#abs_eq)&&*
+            }
+        }
+        impl<T: ::ga_core::approx::RelativeEq> ::ga_core::approx::RelativeEq for #name<T>
+        where
+            T::Epsilon: Clone,
+        {
+            fn default_max_relative() -> T::Epsilon { T::default_max_relative() }
+            fn relative_eq(&self, other: &Self, epsilon: T::Epsilon, max_relative: T::Epsilon) -> bool {
+                #(#rel_eq)&&*
+            }
+        }
+        impl<T: ::ga_core::approx::UlpsEq> ::ga_core::approx::UlpsEq for #name<T>
+        where
+            T::Epsilon: Clone,
+        {
+            fn default_max_ulps() -> u32 { T::default_max_ulps() }
+            fn ulps_eq(&self, other: &Self, epsilon: T::Epsilon, max_ulps: u32) -> bool {
+                #(#ulps_eq)&&*
+            }
+        }
+
+        #dense_items
+        #(#subset_conversions)*
+    }
+}
+
+/// Products, sums and sandwiches of one ordered pair of types.
+fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
+    let ring = ring();
+    let (ta, tb) = (&alg.types[a], &alg.types[b]);
+    let (an, bn) = (&ta.name, &tb.name);
+    let lhs = quote!(self);
+    let rhs = quote!(rhs);
+    let mut items = Vec::new();
+    for kind in Product::ALL {
+        let model = alg.bilinear(kind, &ta.blades, &tb.blades);
+        let ty = out_ty(alg, model.output);
+        let body = bilinear_body(
+            alg,
+            &model.outputs,
+            model.output,
+            (&lhs, Output::Type(a)),
+            (&rhs, Output::Type(b)),
+        );
+        let (trait_name, method) = match kind {
+            Product::Geometric => ("Geometric", "geometric"),
+            Product::Wedge => ("Wedge", "wedge"),
+            Product::LeftContraction => ("LeftContraction", "left_contraction"),
+            Product::RightContraction => ("RightContraction", "right_contraction"),
+            Product::ScalarProduct => ("ScalarProduct", "scalar_product"),
+            Product::Regressive => ("Regressive", "regressive"),
+        };
+        let trait_ident = format_ident!("{trait_name}");
+        let method = format_ident!("{method}");
+        let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
+        let doc = format!("{terms} multiplications.");
+        items.push(quote! {
+            impl<T: #ring> ::ga_core::ops::#trait_ident<#bn<T>> for #an<T> {
+                type Output = #ty;
+                #[doc = #doc]
+                #[inline]
+                fn #method(&self, rhs: &#bn<T>) -> #ty { #body }
+            }
+        });
+        let op = match kind {
+            Product::Geometric => Some(("Mul", "mul")),
+            Product::Wedge => Some(("BitXor", "bitxor")),
+            Product::LeftContraction => Some(("BitOr", "bitor")),
+            Product::Regressive => Some(("BitAnd", "bitand")),
+            _ => None,
+        };
+        if let Some((op_trait, op_method)) = op {
+            let op_trait = format_ident!("{op_trait}");
+            let op_method = format_ident!("{op_method}");
+            items.push(quote! {
+                impl<T: #ring> ::core::ops::#op_trait<#bn<T>> for #an<T> {
+                    type Output = #ty;
+                    #[inline]
+                    fn #op_method(self, rhs: #bn<T>) -> #ty {
+                        ::ga_core::ops::#trait_ident::#method(&self, &rhs)
+                    }
+                }
+                impl<T: #ring> ::core::ops::#op_trait<&#bn<T>> for &#an<T> {
+                    type Output = #ty;
+                    #[inline]
+                    fn #op_method(self, rhs: &#bn<T>) -> #ty {
+                        ::ga_core::ops::#trait_ident::#method(self, rhs)
+                    }
+                }
+            });
+        }
+    }
+    items.push(emit_sum(alg, a, b, false));
+    items.push(emit_sum(alg, a, b, true));
+    items.push(emit_sandwich(alg, a, b));
+    quote! { #(#items)* }
+}
+
+fn emit_sum(alg: &Algebra, a: usize, b: usize, subtract: bool) -> TokenStream {
+    let ring = ring();
+    let (ta, tb) = (&alg.types[a], &alg.types[b]);
+    let (an, bn) = (&ta.name, &tb.name);
+    let out = alg.resolve(ta.set | tb.set);
+    // Sums of non-scalar types never resolve to `T`; a scalar-only pair cannot be declared
+    // without a blade list `[1]`, which resolves to the declared type too.
+    let out = match out {
+        Output::Scalar => Output::Type(if ta.blades.len() <= tb.blades.len() {
+            a
+        } else {
+            b
+        }),
+        o => o,
+    };
+    let ty = out_ty(alg, out);
+    let make = |owned: bool| {
+        let exprs = alg
+            .output_blades(out)
+            .into_iter()
+            .filter_map(|bl| {
+                let f = field_ident(alg, bl);
+                let (x, y) = if owned {
+                    (quote!(self.#f), quote!(rhs.#f))
+                } else {
+                    (quote!(self.#f.clone()), quote!(rhs.#f.clone()))
+                };
+                let e = match (ta.contains(bl), tb.contains(bl), subtract) {
+                    (true, true, false) => quote!(#x + #y),
+                    (true, true, true) => quote!(#x - #y),
+                    (true, false, _) => x,
+                    (false, true, false) => y,
+                    (false, true, true) => quote!(-#y),
+                    (false, false, _) => return None,
+                };
+                Some((bl, e))
+            })
+            .collect();
+        construct(alg, out, exprs)
+    };
+    let (owned, borrowed) = (make(true), make(false));
+    let (tr, m) = if subtract {
+        (quote!(Sub), quote!(sub))
+    } else {
+        (quote!(Add), quote!(add))
+    };
+    quote! {
+        impl<T: #ring> ::core::ops::#tr<#bn<T>> for #an<T> {
+            type Output = #ty;
+            #[inline]
+            fn #m(self, rhs: #bn<T>) -> #ty { #owned }
+        }
+        impl<T: #ring> ::core::ops::#tr<&#bn<T>> for &#an<T> {
+            type Output = #ty;
+            #[inline]
+            fn #m(self, rhs: &#bn<T>) -> #ty { #borrowed }
+        }
+    }
+}
+
+/// `V X Ṽ` projected on `X`: the product `V X` (reusing the generated geometric product), then
+/// only the terms of `(V X) Ṽ` that land on `X`'s blades.
+fn emit_sandwich(alg: &Algebra, v: usize, x: usize) -> TokenStream {
+    let ring = ring();
+    let (tv, tx) = (&alg.types[v], &alg.types[x]);
+    let (vn, xn) = (&tv.name, &tx.name);
+    let first = alg.bilinear(Product::Geometric, &tv.blades, &tx.blades);
+    let p_blades: Vec<Blade> = first.outputs.iter().map(|(b, _)| *b).collect();
+    let outputs = alg.sandwich_terms(&p_blades, &tv.blades, &tx.blades);
+    let p = quote!(p);
+    let me = quote!(self);
+    let body = bilinear_body(
+        alg,
+        &outputs,
+        Output::Type(x),
+        (&p, first.output),
+        (&me, Output::Type(v)),
+    );
+    quote! {
+        impl<T: #ring> ::ga_core::ops::SandwichUnit<#xn<T>> for #vn<T> {
+            #[inline]
+            fn sandwich_unit(&self, x: &#xn<T>) -> #xn<T> {
+                let p = ::ga_core::ops::Geometric::geometric(self, x);
+                #body
+            }
+        }
+        impl<T: ::ga_core::scalar::Field> ::ga_core::ops::Sandwich<#xn<T>> for #vn<T> {
+            #[inline]
+            fn sandwich(&self, x: &#xn<T>) -> Option<#xn<T>> {
+                let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
+                Some(::ga_core::ops::SandwichUnit::sandwich_unit(self, x).scale(&inv))
+            }
+        }
+    }
+}

@@ -1,0 +1,219 @@
+//! Parsing the `algebra!` declaration with syn. Only syntax is checked here; meaning (unknown
+//! blades, duplicates, empty types) is checked by the model, which keeps the spans.
+
+use proc_macro2::Span;
+use syn::parse::{Parse, ParseStream};
+use syn::{braced, bracketed, Attribute, Ident, LitInt, Token};
+
+/// One signature entry with its span: the square of a generator, `+1`, `-1` or `0`.
+pub struct SignatureEntry {
+    pub value: i32,
+    pub span: Span,
+}
+
+/// Which blades a declared type holds.
+pub enum BladeSpec {
+    /// `grade 1` or `grades 0 2 4`.
+    Grades(Vec<(usize, Span)>, Span),
+    /// `[1, e12, e13]`; the scalar blade is written `1`.
+    List(Vec<(String, Span)>, Span),
+}
+
+/// `Name: grades 0 2`, with its doc attributes.
+pub struct TypeDecl {
+    pub attrs: Vec<Attribute>,
+    pub name: Ident,
+    pub spec: BladeSpec,
+}
+
+/// The whole declaration.
+pub struct Declaration {
+    pub name: Ident,
+    pub signature: Vec<SignatureEntry>,
+    pub signature_span: Span,
+    pub basis: Option<Vec<Ident>>,
+    pub basis_span: Span,
+    pub types: Vec<TypeDecl>,
+    pub types_span: Span,
+    pub dense: Option<Ident>,
+}
+
+impl Parse for Declaration {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let mut name = None;
+        let mut signature = None;
+        let mut basis = None;
+        let mut types = None;
+        let mut dense = None;
+        let start = input.span();
+        while !input.is_empty() {
+            let key: Ident = input.parse()?;
+            input.parse::<Token![:]>()?;
+            let key_str = key.to_string();
+            let duplicate = || syn::Error::new(key.span(), format!("`{key_str}` is given twice"));
+            match key_str.as_str() {
+                "name" => {
+                    if name.is_some() {
+                        return Err(duplicate());
+                    }
+                    name = Some(input.parse::<Ident>()?);
+                }
+                "signature" => {
+                    if signature.is_some() {
+                        return Err(duplicate());
+                    }
+                    signature = Some((parse_signature(input)?, key.span()));
+                }
+                "basis" => {
+                    if basis.is_some() {
+                        return Err(duplicate());
+                    }
+                    let content;
+                    bracketed!(content in input);
+                    let idents = content.parse_terminated(Ident::parse, Token![,])?;
+                    basis = Some((idents.into_iter().collect::<Vec<_>>(), key.span()));
+                }
+                "types" => {
+                    if types.is_some() {
+                        return Err(duplicate());
+                    }
+                    let content;
+                    braced!(content in input);
+                    let decls = content.parse_terminated(TypeDecl::parse, Token![,])?;
+                    types = Some((decls.into_iter().collect::<Vec<_>>(), key.span()));
+                }
+                "dense" => {
+                    if dense.is_some() {
+                        return Err(duplicate());
+                    }
+                    dense = Some(input.parse::<Ident>()?);
+                }
+                other => {
+                    return Err(syn::Error::new(
+                        key.span(),
+                        format!(
+                            "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
+                             `types`, `dense`"
+                        ),
+                    ))
+                }
+            }
+            if !input.is_empty() {
+                input.parse::<Token![,]>()?;
+            }
+        }
+        let missing = |what: &str, example: &str| {
+            syn::Error::new(start, format!("missing `{what}`, e.g. `{what}: {example}`"))
+        };
+        let name = name.ok_or_else(|| missing("name", "cga"))?;
+        let (signature, signature_span) =
+            signature.ok_or_else(|| missing("signature", "[+1, +1, +1, +1, -1]"))?;
+        let (types, types_span) =
+            types.ok_or_else(|| missing("types", "{ Vector: grade 1, Even: grades 0 2 }"))?;
+        let (basis, basis_span) = match basis {
+            Some((b, s)) => (Some(b), s),
+            None => (None, signature_span),
+        };
+        Ok(Declaration {
+            name,
+            signature,
+            signature_span,
+            basis,
+            basis_span,
+            types,
+            types_span,
+            dense,
+        })
+    }
+}
+
+fn parse_signature(input: ParseStream) -> syn::Result<Vec<SignatureEntry>> {
+    let content;
+    bracketed!(content in input);
+    let mut entries = Vec::new();
+    while !content.is_empty() {
+        let mut sign = 1;
+        let span = content.span();
+        if content.peek(Token![-]) {
+            content.parse::<Token![-]>()?;
+            sign = -1;
+        } else if content.peek(Token![+]) {
+            content.parse::<Token![+]>()?;
+        }
+        let lit: LitInt = content.parse().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                "signature entries are `+1`, `-1` or `0` (the square of each generator)",
+            )
+        })?;
+        let value: i32 = lit.base10_parse()?;
+        if value > 1 {
+            return Err(syn::Error::new(
+                lit.span(),
+                format!(
+                    "signature entry `{value}` is not allowed: a generator squares to `+1`, `-1` \
+                     or `0`"
+                ),
+            ));
+        }
+        entries.push(SignatureEntry {
+            value: sign * value,
+            span: lit.span().join(span).unwrap_or(lit.span()),
+        });
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
+    }
+    Ok(entries)
+}
+
+impl Parse for TypeDecl {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let attrs = input.call(Attribute::parse_outer)?;
+        let name: Ident = input.parse()?;
+        input.parse::<Token![:]>()?;
+        let spec = if input.peek(syn::token::Bracket) {
+            let content;
+            let bracket = bracketed!(content in input);
+            let mut blades = Vec::new();
+            while !content.is_empty() {
+                if content.peek(LitInt) {
+                    let lit: LitInt = content.parse()?;
+                    blades.push((lit.to_string(), lit.span()));
+                } else {
+                    let id: Ident = content.parse().map_err(|e| {
+                        syn::Error::new(e.span(), "expected a blade name such as `e12`, or `1`")
+                    })?;
+                    blades.push((id.to_string(), id.span()));
+                }
+                if !content.is_empty() {
+                    content.parse::<Token![,]>()?;
+                }
+            }
+            BladeSpec::List(blades, bracket.span.join())
+        } else {
+            let kw: Ident = input.parse().map_err(|e| {
+                syn::Error::new(
+                    e.span(),
+                    "expected `grade K`, `grades K L ...` or a blade list `[1, e12, ...]`",
+                )
+            })?;
+            if kw != "grade" && kw != "grades" {
+                return Err(syn::Error::new(
+                    kw.span(),
+                    format!(
+                        "expected `grade K`, `grades K L ...` or a blade list `[1, e12, ...]`, \
+                         found `{kw}`"
+                    ),
+                ));
+            }
+            let mut grades = Vec::new();
+            while input.peek(LitInt) {
+                let lit: LitInt = input.parse()?;
+                grades.push((lit.base10_parse::<usize>()?, lit.span()));
+            }
+            BladeSpec::Grades(grades, kw.span())
+        };
+        Ok(TypeDecl { attrs, name, spec })
+    }
+}
