@@ -2,15 +2,23 @@
 //!
 //! * [`shapes`]: the bounded shapes [`Segment`], [`Triangle`], [`Sphere`] (surface) and
 //!   [`Ball`] (solid), built by fallible constructors ([`GeometryError`]).
+//! * [`intersect`]: exact tests `a.intersects(&b)` ([`Intersects`]) between them, built on the
+//!   certified polynomial predicates of [`predicates`] and [`filter`].
 //! * [`euclid`]: Euclidean `f64` reference tests (Möller 1997, Möller–Trumbore, sphere tests).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod adversarial;
 pub mod error;
 pub mod euclid;
+pub mod filter;
+pub mod intersect;
+pub mod oracle;
+pub mod predicates;
 pub mod shapes;
 
 pub use error::GeometryError;
+pub use intersect::{Intersects, IntersectsWith};
 pub use shapes::{Ball, Segment, Sphere, Triangle};
 
 pub use ga_core;
