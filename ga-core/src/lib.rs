@@ -11,6 +11,7 @@ pub mod format;
 pub mod linalg;
 pub mod ops;
 pub mod pga3;
+pub mod reference;
 pub mod scalar;
 pub mod symbolic;
 pub mod vga3;
