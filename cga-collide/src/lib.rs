@@ -23,3 +23,5 @@ pub use shapes::{Ball, Segment, Sphere, Triangle};
 
 pub use ga_core;
 pub use nalgebra;
+
+pub mod mesh;
