@@ -22,6 +22,7 @@
 //! [`Ring`]: build them from `Poly` coefficients and use the products as usual.
 
 mod parse;
+pub mod thesis;
 
 use core::cmp::Ordering;
 use core::fmt;
@@ -457,19 +458,19 @@ impl Poly {
             return Poly::default();
         }
         if self.terms.len() == 1 || other.terms.len() == 1 {
-            // A single term keeps the order of the other factor's monomials.
+            // Multiplying by one term keeps monomials distinct, but not necessarily in order.
             let (single, many) = if self.terms.len() == 1 {
                 (&self.terms[0], other)
             } else {
                 (&other.terms[0], self)
             };
-            return Poly {
-                terms: many
-                    .terms
-                    .iter()
-                    .map(|(m, c)| (m.mul(&single.0), c * &single.1))
-                    .collect(),
-            };
+            let mut terms: Vec<(Monomial, Rational)> = many
+                .terms
+                .iter()
+                .map(|(m, c)| (m.mul(&single.0), c * &single.1))
+                .collect();
+            terms.sort_unstable_by(|a, b| a.0.cmp(&b.0));
+            return Poly { terms };
         }
         let mut acc: HashMap<Monomial, Rational> =
             HashMap::with_capacity(self.terms.len() * other.terms.len() / 2 + 1);
@@ -743,6 +744,15 @@ mod tests {
         assert_eq!(p("(a+b)^2"), p("a^2 + 2*a*b + b^2"));
         assert!(p("x - x").is_zero());
         assert_eq!(p("x/2 + x/2"), p("x"));
+    }
+
+    #[test]
+    fn single_term_products_stay_canonical() {
+        // x < y in id order, but x·x vs y·x compare the other way round.
+        let (x, y) = (Poly::var("canon_x"), Poly::var("canon_y"));
+        let s = &x + &y;
+        assert_eq!(&s * &x, &(&x * &x) + &(&y * &x));
+        assert_eq!(&x * &s, &(&x * &y) + &(&x * &x));
     }
 
     #[test]

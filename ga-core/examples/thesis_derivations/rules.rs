@@ -1,0 +1,518 @@
+//! The thesis's classification rules against Euclidean ground truth (exact rationals).
+
+use std::fmt::Write as _;
+
+use ga_core::scalar::Rational;
+use ga_core::symbolic::thesis::{Entry, Fixture, Scope, SymMultivector};
+use ga_core::symbolic::Poly;
+use num_traits::{Signed, Zero};
+
+use super::{gp, lc, n_inf, point2, thesis_dual, wedge_all, Verdict};
+
+type V3 = [Rational; 3];
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n.into(), d.into())
+}
+fn add(a: &V3, b: &V3) -> V3 {
+    [&a[0] + &b[0], &a[1] + &b[1], &a[2] + &b[2]]
+}
+fn sub(a: &V3, b: &V3) -> V3 {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+fn mul(k: &Rational, a: &V3) -> V3 {
+    [k * &a[0], k * &a[1], k * &a[2]]
+}
+fn dot(a: &V3, b: &V3) -> Rational {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+fn cross(a: &V3, b: &V3) -> V3 {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+fn is_zero3(a: &V3) -> bool {
+    a.iter().all(Zero::is_zero)
+}
+
+/// A deterministic generator (the report must reproduce exactly).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        self.0 >> 33
+    }
+    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next() % ((hi - lo + 1) as u64)) as i64
+    }
+    fn rat(&mut self) -> Rational {
+        q(self.int(-9, 9), self.int(1, 4))
+    }
+    fn v3(&mut self) -> V3 {
+        [self.rat(), self.rat(), self.rat()]
+    }
+    /// A nonzero vector.
+    fn dir(&mut self) -> V3 {
+        loop {
+            let v = self.v3();
+            if !is_zero3(&v) {
+                return v;
+            }
+        }
+    }
+    /// A rational point of the unit sphere (inverse stereographic projection).
+    fn unit(&mut self) -> V3 {
+        let (u, v) = (self.rat(), self.rat());
+        let den = &u * &u + &v * &v + q(1, 1);
+        [
+            q(2, 1) * &u / &den,
+            q(2, 1) * &v / &den,
+            (&u * &u + &v * &v - q(1, 1)) / &den,
+        ]
+    }
+    fn radius(&mut self) -> Rational {
+        q(self.int(1, 12), self.int(1, 3))
+    }
+}
+
+/// A vector orthogonal to `n` (nonzero), and a second one orthogonal to both.
+fn perp(n: &V3, g: &mut Lcg) -> (V3, V3) {
+    loop {
+        let a = cross(n, &g.dir());
+        if !is_zero3(&a) {
+            let b = cross(n, &a);
+            return (a, b);
+        }
+    }
+}
+
+/// Four distinct, non-coplanar rational points on the sphere (c, r).
+fn sphere_points(c: &V3, r: &Rational, g: &mut Lcg) -> [V3; 4] {
+    loop {
+        let p: Vec<V3> = (0..4).map(|_| add(c, &mul(r, &g.unit()))).collect();
+        let vol = dot(&sub(&p[1], &p[0]), &cross(&sub(&p[2], &p[0]), &sub(&p[3], &p[0])));
+        if !vol.is_zero() {
+            return [p[0].clone(), p[1].clone(), p[2].clone(), p[3].clone()];
+        }
+    }
+}
+
+fn bind<'a>(letters: &[&'a str], pts: &[V3]) -> Vec<(String, Rational)> {
+    let mut v = Vec::new();
+    for (l, p) in letters.iter().zip(pts) {
+        for (i, c) in p.iter().enumerate() {
+            v.push((format!("{l}{}", i + 1), c.clone()));
+        }
+    }
+    v
+}
+
+fn eval(scope: &Scope, text: &str, values: &[(String, Rational)]) -> SymMultivector {
+    let vals: Vec<(&str, Rational)> = values.iter().map(|(n, r)| (n.as_str(), r.clone())).collect();
+    scope.eval_rational(text, &vals).expect("evaluates")
+}
+
+fn scalar_of(m: &SymMultivector) -> Rational {
+    m.get(0).as_constant().unwrap_or_else(Rational::zero)
+}
+
+fn cpoint(x: &V3) -> SymMultivector {
+    point2(x.clone().map(Poly::constant))
+}
+
+fn sign(r: &Rational) -> i32 {
+    if r.is_zero() {
+        0
+    } else if r.is_positive() {
+        1
+    } else {
+        -1
+    }
+}
+
+/// Tally of (ground-truth class, observed value) → count.
+#[derive(Default)]
+struct Tally(Vec<(String, String, usize)>);
+impl Tally {
+    fn add(&mut self, truth: &str, seen: &str) {
+        match self
+            .0
+            .iter_mut()
+            .find(|(t, s, _)| t == truth && s == seen)
+        {
+            Some((_, _, n)) => *n += 1,
+            None => self.0.push((truth.into(), seen.into(), 1)),
+        }
+    }
+    fn render(&self, title: &str, out: &mut String) {
+        let _ = writeln!(out, "{title}\n\n| ground truth | observed | cases |\n|---|---|---|");
+        for (t, s, n) in &self.0 {
+            let _ = writeln!(out, "| {t} | {s} | {n} |");
+        }
+        out.push('\n');
+    }
+}
+
+fn sign_word(s: i32, what: &str) -> String {
+    match s {
+        0 => format!("{what} = 0"),
+        1 => format!("{what} > 0"),
+        _ => format!("{what} < 0"),
+    }
+}
+
+const CASES: usize = 12;
+
+pub fn check_rule(
+    fx: &Fixture,
+    e: &Entry,
+    scope: &Scope,
+    kind: &str,
+    method: &mut String,
+    detail: &mut String,
+) -> Verdict {
+    let formula_of = |id: &str| {
+        fx.entry(id)
+            .and_then(|x| x.field("formula"))
+            .unwrap_or("0")
+            .to_string()
+    };
+    let mut g = Lcg(0x5eed_0000 + kind.len() as u64);
+    match kind {
+        "rule_line_line" => {
+            *method = format!(
+                "the printed scalar on {CASES} exact cases per class (intersecting, parallel, skew); \
+                 symbolically against det(x2 − x1, x4 − x3, x3 − x1)"
+            );
+            let f = e.field("formula").unwrap_or("0");
+            let mut t = Tally::default();
+            let mut wrong = false;
+            for class in ["intersecting", "parallel (distinct)", "skew"] {
+                for _ in 0..CASES {
+                    let (a, b, c, d) = match class {
+                        "intersecting" => {
+                            let p0 = g.v3();
+                            let (d1, d2) = loop {
+                                let (d1, d2) = (g.dir(), g.dir());
+                                if !is_zero3(&cross(&d1, &d2)) {
+                                    break (d1, d2);
+                                }
+                            };
+                            (
+                                sub(&p0, &d1),
+                                add(&p0, &mul(&q(2, 1), &d1)),
+                                add(&p0, &d2),
+                                sub(&p0, &mul(&q(3, 1), &d2)),
+                            )
+                        }
+                        "parallel (distinct)" => {
+                            let a = g.v3();
+                            let d1 = g.dir();
+                            let (off, _) = perp(&d1, &mut g);
+                            let c = add(&a, &off);
+                            (a.clone(), add(&a, &d1), c.clone(), add(&c, &mul(&q(2, 1), &d1)))
+                        }
+                        _ => loop {
+                            let (a, b, c, d) = (g.v3(), g.v3(), g.v3(), g.v3());
+                            let vol = dot(&sub(&b, &a), &cross(&sub(&d, &c), &sub(&c, &a)));
+                            if !vol.is_zero() {
+                                break (a, b, c, d);
+                            }
+                        },
+                    };
+                    let v = scalar_of(&eval(
+                        scope,
+                        f,
+                        &bind(&["a", "b", "c", "d"], &[a, b, c, d]),
+                    ));
+                    let seen = if v.is_zero() { "value = 0" } else { "value ≠ 0" };
+                    let predicted_meet = v.is_zero();
+                    if predicted_meet != (class == "intersecting") {
+                        wrong = true;
+                    }
+                    t.add(class, seen);
+                }
+            }
+            t.render("Rule \"value = 0 ⇔ the lines intersect\":", detail);
+            // Symbolic: the value is a multiple of the coplanarity determinant.
+            let full = scope
+                .expand(&scope.parse(f).expect("parses"))
+                .expect("expands")
+                .get(0);
+            let u = |x: &str, y: &str| -> [Poly; 3] {
+                [1, 2, 3].map(|i| Poly::var(&format!("{x}{i}")) - Poly::var(&format!("{y}{i}")))
+            };
+            let (d1, d2, w) = (u("b", "a"), u("d", "c"), u("c", "a"));
+            let det = &d1[0] * &(&d2[1] * &w[2] - &d2[2] * &w[1])
+                + &d1[1] * &(&d2[2] * &w[0] - &d2[0] * &w[2])
+                + &d1[2] * &(&d2[0] * &w[1] - &d2[1] * &w[0]);
+            match full.ratio_to(&det) {
+                Some(k) => {
+                    let _ = writeln!(
+                        detail,
+                        "Proved symbolically: the value = {} · det(x2 − x1, x4 − x3, x3 − x1), which \
+                         vanishes exactly when the lines are coplanar: intersecting **or parallel**. \
+                         Corrected rule: value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet in one \
+                         point (value = 0 with parallel directions: parallel or identical lines).",
+                        super::rat_str(&k)
+                    );
+                }
+                None => {
+                    let _ = writeln!(detail, "Not proportional to the coplanarity determinant.");
+                }
+            }
+            if wrong {
+                Verdict::RuleFails
+            } else {
+                Verdict::RuleHolds
+            }
+        }
+        "rule_line_plane" => {
+            *method = format!(
+                "printed B (II.56), B² (II.59) and the sub-expression on {CASES} exact cases per class"
+            );
+            let (fb, fb2) = (formula_of("II.56"), formula_of("II.59"));
+            let sub_f = e.field("formula").unwrap_or("0");
+            let mut t = Tally::default();
+            let mut wrong = false;
+            for class in ["crossing", "parallel, off the plane", "in the plane"] {
+                for _ in 0..CASES {
+                    let (c, d, qq) = (g.v3(), g.v3(), g.v3());
+                    let nrm = cross(&sub(&d, &c), &sub(&qq, &c));
+                    if is_zero3(&nrm) {
+                        continue;
+                    }
+                    let (in1, in2) = perp(&nrm, &mut g);
+                    let (a, b) = match class {
+                        "crossing" => loop {
+                            let (a, b) = (g.v3(), g.v3());
+                            if !dot(&sub(&b, &a), &nrm).is_zero() {
+                                break (a, b);
+                            }
+                        },
+                        "parallel, off the plane" => {
+                            let a = add(&add(&c, &in1), &nrm);
+                            (a.clone(), add(&a, &in2))
+                        }
+                        _ => (add(&c, &in1), add(&c, &in2)),
+                    };
+                    let vals = bind(&["a", "b", "c", "d", "q"], &[a, b, c, d, qq]);
+                    let bz = eval(scope, &fb, &vals).is_zero();
+                    let b2 = sign(&scalar_of(&eval(scope, &fb2, &vals)));
+                    let sz = scalar_of(&eval(scope, sub_f, &vals)).is_zero();
+                    let seen = format!(
+                        "B {} , {}, sub-expression {}",
+                        if bz { "= 0" } else { "≠ 0" },
+                        sign_word(b2, "B²"),
+                        if sz { "= 0" } else { "≠ 0" }
+                    );
+                    let predicted = if !bz {
+                        "crossing"
+                    } else if sz {
+                        "in the plane"
+                    } else {
+                        "parallel, off the plane"
+                    };
+                    if predicted != class {
+                        wrong = true;
+                    }
+                    t.add(class, &seen);
+                }
+            }
+            t.render("Printed quantities per ground-truth class:", detail);
+            if wrong {
+                Verdict::RuleFails
+            } else {
+                Verdict::RuleHolds
+            }
+        }
+        "rule_plane_plane" => {
+            *method = format!(
+                "printed B (II.66) and B² (II.69) on {CASES} exact cases per class"
+            );
+            let (fb, fb2) = (formula_of("II.66"), formula_of("II.69"));
+            let mut t = Tally::default();
+            let mut wrong = false;
+            for class in ["intersecting", "parallel (distinct)", "coincident"] {
+                for _ in 0..CASES {
+                    let (a, b, c) = (g.v3(), g.v3(), g.v3());
+                    let nrm = cross(&sub(&b, &a), &sub(&c, &a));
+                    if is_zero3(&nrm) {
+                        continue;
+                    }
+                    let (in1, in2) = perp(&nrm, &mut g);
+                    let (d, qq, w) = match class {
+                        "intersecting" => loop {
+                            let (d, qq, w) = (g.v3(), g.v3(), g.v3());
+                            let n2 = cross(&sub(&qq, &d), &sub(&w, &d));
+                            if !is_zero3(&cross(&nrm, &n2)) {
+                                break (d, qq, w);
+                            }
+                        },
+                        "parallel (distinct)" => {
+                            let d = add(&a, &nrm);
+                            (d.clone(), add(&d, &in1), add(&d, &in2))
+                        }
+                        _ => (a.clone(), add(&a, &in1), add(&a, &in2)),
+                    };
+                    let vals = bind(&["a", "b", "c", "d", "q", "w"], &[a, b, c, d, qq, w]);
+                    let bz = eval(scope, &fb, &vals).is_zero();
+                    let b2 = sign(&scalar_of(&eval(scope, &fb2, &vals)));
+                    let seen = format!("B {}, {}", if bz { "= 0" } else { "≠ 0" }, sign_word(b2, "B²"));
+                    let predicted_parallel = bz;
+                    if predicted_parallel == (class == "intersecting") {
+                        wrong = true;
+                    }
+                    t.add(class, &seen);
+                }
+            }
+            t.render("Printed quantities per ground-truth class:", detail);
+            let _ = writeln!(
+                detail,
+                "Coincident planes are counted as parallel by the rule (B = 0), which is how the \
+                 thesis's two cases read."
+            );
+            if wrong {
+                Verdict::RuleFails
+            } else {
+                Verdict::RuleHolds
+            }
+        }
+        "rule_line_sphere" | "rule_sphere_plane" | "rule_sphere_sphere" => {
+            sphere_rule(fx, kind, scope, &formula_of, &mut g, method, detail)
+        }
+        _ => {
+            *detail = format!("no rule check for `{kind}`");
+            Verdict::RuleFails
+        }
+    }
+}
+
+/// Classes by distance: `Two`, `Tangent`, `None`.
+fn sphere_rule(
+    _fx: &Fixture,
+    kind: &str,
+    scope: &Scope,
+    formula_of: &dyn Fn(&str) -> String,
+    g: &mut Lcg,
+    method: &mut String,
+    detail: &mut String,
+) -> Verdict {
+    let (printed_id, classes): (&str, &[&str]) = match kind {
+        "rule_line_sphere" => ("II.64", &["two points", "tangent", "misses"]),
+        "rule_sphere_plane" => ("II.76", &["circle", "tangent", "misses"]),
+        _ => (
+            "II.82",
+            &[
+                "circle",
+                "externally tangent",
+                "internally tangent",
+                "apart",
+                "nested",
+                "concentric",
+            ],
+        ),
+    };
+    *method = format!(
+        "sign of the printed B² ({printed_id}) and of the computed scalar part of B B \
+         (B = (I A) ⌋ C from the points, generated products) on {CASES} exact cases per class; \
+         ground truth from centre distances and radii"
+    );
+    let fb2 = formula_of(printed_id);
+    let mut printed_tally = Tally::default();
+    let mut computed_tally = Tally::default();
+    let mut wrong = false;
+    for &class in classes {
+        for _ in 0..CASES {
+            let c = g.v3();
+            let r = g.radius();
+            let sp = sphere_points(&c, &r, g);
+            let (letters, pts, a_mv, c_mv): (Vec<&str>, Vec<V3>, SymMultivector, SymMultivector) =
+                match kind {
+                    "rule_line_sphere" => {
+                        let u = g.unit();
+                        let (t1, _) = perp(&u, g);
+                        let anchor = match class {
+                            "two points" => add(&c, &mul(&(&r * q(1, 2)), &u)),
+                            "tangent" => add(&c, &mul(&r, &u)),
+                            _ => add(&c, &mul(&(&r * q(3, 2)), &u)),
+                        };
+                        let (a, b) = (anchor.clone(), add(&anchor, &t1));
+                        let e = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
+                        let l = wedge_all(&[cpoint(&a), cpoint(&b), n_inf()]);
+                        let pts = vec![a, b, sp[0].clone(), sp[1].clone(), sp[2].clone(), sp[3].clone()];
+                        (vec!["a", "b", "c", "d", "q", "w"], pts, e, l)
+                    }
+                    "rule_sphere_plane" => {
+                        let u = g.unit();
+                        let (t1, t2) = perp(&u, g);
+                        let anchor = match class {
+                            "circle" => add(&c, &mul(&(&r * q(1, 3)), &u)),
+                            "tangent" => add(&c, &mul(&r, &u)),
+                            _ => add(&c, &mul(&(&r * q(5, 4)), &u)),
+                        };
+                        let (p5, p6, p7) = (anchor.clone(), add(&anchor, &t1), add(&anchor, &t2));
+                        let e = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
+                        let pl = wedge_all(&[cpoint(&p5), cpoint(&p6), cpoint(&p7), n_inf()]);
+                        let mut pts = sp.to_vec();
+                        pts.extend([p5, p6, p7]);
+                        (vec!["a", "b", "c", "d", "q", "w", "p"], pts, e, pl)
+                    }
+                    _ => {
+                        let u = g.unit();
+                        let r2 = loop {
+                            let r2 = g.radius();
+                            if r2 != r {
+                                break r2;
+                            }
+                        };
+                        let (sum, diff) = (&r + &r2, (&r - &r2).abs());
+                        let dist = match class {
+                            "circle" => (&sum + &diff) * q(1, 2),
+                            "externally tangent" => sum.clone(),
+                            "internally tangent" => diff.clone(),
+                            "apart" => &sum * q(3, 2),
+                            "nested" => &diff * q(1, 2),
+                            _ => Rational::zero(),
+                        };
+                        let c2 = add(&c, &mul(&dist, &u));
+                        let sp2 = sphere_points(&c2, &r2, g);
+                        let e1 = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
+                        let e2 = wedge_all(&[cpoint(&sp2[0]), cpoint(&sp2[1]), cpoint(&sp2[2]), cpoint(&sp2[3])]);
+                        let mut pts = sp.to_vec();
+                        pts.extend(sp2.iter().cloned());
+                        (vec!["a", "b", "c", "d", "q", "w", "p", "z"], pts, e1, e2)
+                    }
+                };
+            let vals = bind(&letters, &pts);
+            let printed = sign(&scalar_of(&eval(scope, &fb2, &vals)));
+            let bm = lc(&thesis_dual(&a_mv), &c_mv);
+            let computed = sign(&scalar_of(&gp(&bm, &bm)));
+            let truth_says = match class {
+                "two points" | "circle" => 1,
+                "tangent" | "externally tangent" | "internally tangent" => 0,
+                _ => -1,
+            };
+            if printed != truth_says {
+                wrong = true;
+            }
+            printed_tally.add(class, &sign_word(printed, "printed B²"));
+            computed_tally.add(class, &sign_word(computed, "computed ⟨B B⟩₀"));
+        }
+    }
+    printed_tally.render(
+        "The thesis's rule (B² > 0: meet, = 0: tangent, < 0: no meeting) with its printed B²:",
+        detail,
+    );
+    computed_tally.render("The same cases with the correctly computed B:", detail);
+    if wrong {
+        Verdict::RuleFails
+    } else {
+        Verdict::RuleHolds
+    }
+}
