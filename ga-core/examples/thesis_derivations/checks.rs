@@ -6,8 +6,10 @@
 
 use std::fmt::Write as _;
 
-use ga_core::scalar::{Rational, Ring};
-use ga_core::symbolic::thesis::{compare, Comparison, Entry, Fixture, Notation, Scope, SymMultivector};
+use ga_core::scalar::Rational;
+use ga_core::symbolic::thesis::{
+    compare, Comparison, Entry, Fixture, Notation, Scope, SymMultivector,
+};
 use ga_core::symbolic::Poly;
 
 /// The fixture, compiled in.
@@ -18,22 +20,34 @@ pub const FIXTURE: &str = include_str!("../../tests/fixtures/thesis_formulas.txt
 
 mod products {
     use super::*;
-    // TEMPORARY until `ga_core::cga` lands on main: the independent SymMultivector products.
-    /// Geometric product.
+    use ga_core::cga::Multivector;
+    use ga_core::prelude::*;
+
+    fn to_cga(a: &SymMultivector) -> Multivector<Poly> {
+        let c: [Poly; 32] = a
+            .coefficients()
+            .try_into()
+            .unwrap_or_else(|_| unreachable!("32 coefficients"));
+        Multivector::from_coefficients(c)
+    }
+    fn from_cga(m: Multivector<Poly>) -> SymMultivector {
+        SymMultivector::from_coefficients(&m.into_coefficients())
+    }
+    /// Geometric product (generated `ga_core::cga` code over `Poly`).
     pub fn gp(a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
-        a.gp(b)
+        from_cga(to_cga(a).geometric(&to_cga(b)))
     }
-    /// Outer product.
+    /// Outer product (generated).
     pub fn wedge(a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
-        a.wedge(b)
+        from_cga(to_cga(a).wedge(&to_cga(b)))
     }
-    /// Left contraction.
+    /// Left contraction (generated).
     pub fn lc(a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
-        a.left_contraction(b)
+        from_cga(to_cga(a).left_contraction(&to_cga(b)))
     }
-    /// Reverse.
+    /// Reverse (generated).
     pub fn rev(a: &SymMultivector) -> SymMultivector {
-        a.reverse()
+        from_cga(to_cga(a).reverse())
     }
 }
 pub use products::{gp, lc, rev, wedge};
@@ -289,7 +303,11 @@ fn check(fx: &Fixture, e: &Entry) -> Row {
         }
         "point_wedge_point" => {
             method = "X ∧ Y".into();
-            judge(&printed(), &wedge(&point_of("a"), &point_of("b")), &mut detail)
+            judge(
+                &printed(),
+                &wedge(&point_of("a"), &point_of("b")),
+                &mut detail,
+            )
         }
         "line" => {
             method = "P1 ∧ P2 ∧ n_inf".into();
@@ -370,7 +388,11 @@ fn check(fx: &Fixture, e: &Entry) -> Row {
                       modulo co² + si² = 1"
                 .into();
             let c = reduce_quadric(&xr, "co", "si", -1);
-            let v = judge(&reduce_quadric(&printed_point, "co", "si", -1), &c, &mut detail);
+            let v = judge(
+                &reduce_quadric(&printed_point, "co", "si", -1),
+                &c,
+                &mut detail,
+            );
             if v == Verdict::Differs {
                 let half = Poly::ratio(1, 2).expect("nonzero");
                 let xprime = c.grade(1).map(|q| q * &half);
@@ -410,7 +432,11 @@ fn check(fx: &Fixture, e: &Entry) -> Row {
                 let _ = writeln!(
                     detail,
                     "\nWith the sign of α reversed, F(e^α x) = e^α D_α F(x) D̃_α: {}.",
-                    if ok { "holds exactly" } else { "does not hold either" }
+                    if ok {
+                        "holds exactly"
+                    } else {
+                        "does not hold either"
+                    }
                 );
                 let dn = gp(&gp(&d, &point_of("a")), &rev(&d));
                 let _ = writeln!(
@@ -543,7 +569,10 @@ fn grades(m: &SymMultivector) -> String {
     let mut g: Vec<u32> = m.iter().map(|(k, _)| k.count_ones()).collect();
     g.sort_unstable();
     g.dedup();
-    g.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+    g.iter()
+        .map(|x| x.to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// The primitive computed from points, its aux form, and the point letters of each `defs`
@@ -618,10 +647,7 @@ fn check_defs(
                 .unwrap_or_default();
             if got != want {
                 all_ok = false;
-                let _ = writeln!(
-                    detail,
-                    "- `{name}`: printed `{got}`, should be `{want}`"
-                );
+                let _ = writeln!(detail, "- `{name}`: printed `{got}`, should be `{want}`");
             }
         }
         return if all_ok {
@@ -650,7 +676,8 @@ fn check_defs(
     let mut ratios: Vec<(String, Option<Rational>, Poly)> = Vec::new();
     for (mask, coef) in aux_m.iter() {
         let name = coef.variables()[0].clone();
-        let sign = coef.as_constant().is_none() && coef.terms()[0].0 < Rational::from_integer(0.into());
+        let sign =
+            coef.as_constant().is_none() && coef.terms()[0].0 < Rational::from_integer(0.into());
         let want = computed.get(mask);
         let want = if sign { -want } else { want };
         let got = ex
@@ -672,7 +699,7 @@ fn check_defs(
             }
         }
     }
-    counts.sort_by(|a, b| b.1.cmp(&a.1));
+    counts.sort_by_key(|b| std::cmp::Reverse(b.1));
     let k = counts.first().map(|(r, _)| r.clone());
     for (name, r, want) in &ratios {
         if r.is_some() && *r == k {
@@ -687,9 +714,7 @@ fn check_defs(
             detail,
             "- `{name}` should be `{}`{}",
             short(&correct.to_string()),
-            same_as
-                .map(|s| format!(" (= {s})"))
-                .unwrap_or_default()
+            same_as.map(|s| format!(" (= {s})")).unwrap_or_default()
         );
     }
     if let Some(k) = k {
@@ -733,8 +758,8 @@ fn check_square(
     let printed = parse_in(scope, e.field("formula").unwrap_or("0"));
     let (b, _) = meet_aux(&meet_kind);
     let b2 = gp(&b, &b);
-    *method = "scalar part of B B, B the correct (computed) intersection in the auxiliary symbols"
-        .into();
+    *method =
+        "scalar part of B B, B the correct (computed) intersection in the auxiliary symbols".into();
     let others = b2.sub(&b2.grade(0));
     if !others.is_zero() {
         let _ = writeln!(

@@ -95,14 +95,17 @@ fn perp(n: &V3, g: &mut Lcg) -> (V3, V3) {
 fn sphere_points(c: &V3, r: &Rational, g: &mut Lcg) -> [V3; 4] {
     loop {
         let p: Vec<V3> = (0..4).map(|_| add(c, &mul(r, &g.unit()))).collect();
-        let vol = dot(&sub(&p[1], &p[0]), &cross(&sub(&p[2], &p[0]), &sub(&p[3], &p[0])));
+        let vol = dot(
+            &sub(&p[1], &p[0]),
+            &cross(&sub(&p[2], &p[0]), &sub(&p[3], &p[0])),
+        );
         if !vol.is_zero() {
             return [p[0].clone(), p[1].clone(), p[2].clone(), p[3].clone()];
         }
     }
 }
 
-fn bind<'a>(letters: &[&'a str], pts: &[V3]) -> Vec<(String, Rational)> {
+fn bind(letters: &[&str], pts: &[V3]) -> Vec<(String, Rational)> {
     let mut v = Vec::new();
     for (l, p) in letters.iter().zip(pts) {
         for (i, c) in p.iter().enumerate() {
@@ -113,7 +116,10 @@ fn bind<'a>(letters: &[&'a str], pts: &[V3]) -> Vec<(String, Rational)> {
 }
 
 fn eval(scope: &Scope, text: &str, values: &[(String, Rational)]) -> SymMultivector {
-    let vals: Vec<(&str, Rational)> = values.iter().map(|(n, r)| (n.as_str(), r.clone())).collect();
+    let vals: Vec<(&str, Rational)> = values
+        .iter()
+        .map(|(n, r)| (n.as_str(), r.clone()))
+        .collect();
     scope.eval_rational(text, &vals).expect("evaluates")
 }
 
@@ -140,17 +146,16 @@ fn sign(r: &Rational) -> i32 {
 struct Tally(Vec<(String, String, usize)>);
 impl Tally {
     fn add(&mut self, truth: &str, seen: &str) {
-        match self
-            .0
-            .iter_mut()
-            .find(|(t, s, _)| t == truth && s == seen)
-        {
+        match self.0.iter_mut().find(|(t, s, _)| t == truth && s == seen) {
             Some((_, _, n)) => *n += 1,
             None => self.0.push((truth.into(), seen.into(), 1)),
         }
     }
     fn render(&self, title: &str, out: &mut String) {
-        let _ = writeln!(out, "{title}\n\n| ground truth | observed | cases |\n|---|---|---|");
+        let _ = writeln!(
+            out,
+            "{title}\n\n| ground truth | observed | cases |\n|---|---|---|"
+        );
         for (t, s, n) in &self.0 {
             let _ = writeln!(out, "| {t} | {s} | {n} |");
         }
@@ -215,7 +220,12 @@ pub fn check_rule(
                             let d1 = g.dir();
                             let (off, _) = perp(&d1, &mut g);
                             let c = add(&a, &off);
-                            (a.clone(), add(&a, &d1), c.clone(), add(&c, &mul(&q(2, 1), &d1)))
+                            (
+                                a.clone(),
+                                add(&a, &d1),
+                                c.clone(),
+                                add(&c, &mul(&q(2, 1), &d1)),
+                            )
                         }
                         _ => loop {
                             let (a, b, c, d) = (g.v3(), g.v3(), g.v3(), g.v3());
@@ -225,12 +235,12 @@ pub fn check_rule(
                             }
                         },
                     };
-                    let v = scalar_of(&eval(
-                        scope,
-                        f,
-                        &bind(&["a", "b", "c", "d"], &[a, b, c, d]),
-                    ));
-                    let seen = if v.is_zero() { "value = 0" } else { "value ≠ 0" };
+                    let v = scalar_of(&eval(scope, f, &bind(&["a", "b", "c", "d"], &[a, b, c, d])));
+                    let seen = if v.is_zero() {
+                        "value = 0"
+                    } else {
+                        "value ≠ 0"
+                    };
                     let predicted_meet = v.is_zero();
                     if predicted_meet != (class == "intersecting") {
                         wrong = true;
@@ -332,9 +342,7 @@ pub fn check_rule(
             }
         }
         "rule_plane_plane" => {
-            *method = format!(
-                "printed B (II.66) and B² (II.69) on {CASES} exact cases per class"
-            );
+            *method = format!("printed B (II.66) and B² (II.69) on {CASES} exact cases per class");
             let (fb, fb2) = (formula_of("II.66"), formula_of("II.69"));
             let mut t = Tally::default();
             let mut wrong = false;
@@ -363,7 +371,11 @@ pub fn check_rule(
                     let vals = bind(&["a", "b", "c", "d", "q", "w"], &[a, b, c, d, qq, w]);
                     let bz = eval(scope, &fb, &vals).is_zero();
                     let b2 = sign(&scalar_of(&eval(scope, &fb2, &vals)));
-                    let seen = format!("B {}, {}", if bz { "= 0" } else { "≠ 0" }, sign_word(b2, "B²"));
+                    let seen = format!(
+                        "B {}, {}",
+                        if bz { "= 0" } else { "≠ 0" },
+                        sign_word(b2, "B²")
+                    );
                     let predicted_parallel = bz;
                     if predicted_parallel == (class == "intersecting") {
                         wrong = true;
@@ -443,9 +455,21 @@ fn sphere_rule(
                             _ => add(&c, &mul(&(&r * q(3, 2)), &u)),
                         };
                         let (a, b) = (anchor.clone(), add(&anchor, &t1));
-                        let e = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
+                        let e = wedge_all(&[
+                            cpoint(&sp[0]),
+                            cpoint(&sp[1]),
+                            cpoint(&sp[2]),
+                            cpoint(&sp[3]),
+                        ]);
                         let l = wedge_all(&[cpoint(&a), cpoint(&b), n_inf()]);
-                        let pts = vec![a, b, sp[0].clone(), sp[1].clone(), sp[2].clone(), sp[3].clone()];
+                        let pts = vec![
+                            a,
+                            b,
+                            sp[0].clone(),
+                            sp[1].clone(),
+                            sp[2].clone(),
+                            sp[3].clone(),
+                        ];
                         (vec!["a", "b", "c", "d", "q", "w"], pts, e, l)
                     }
                     "rule_sphere_plane" => {
@@ -457,7 +481,12 @@ fn sphere_rule(
                             _ => add(&c, &mul(&(&r * q(5, 4)), &u)),
                         };
                         let (p5, p6, p7) = (anchor.clone(), add(&anchor, &t1), add(&anchor, &t2));
-                        let e = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
+                        let e = wedge_all(&[
+                            cpoint(&sp[0]),
+                            cpoint(&sp[1]),
+                            cpoint(&sp[2]),
+                            cpoint(&sp[3]),
+                        ]);
                         let pl = wedge_all(&[cpoint(&p5), cpoint(&p6), cpoint(&p7), n_inf()]);
                         let mut pts = sp.to_vec();
                         pts.extend([p5, p6, p7]);
@@ -482,8 +511,18 @@ fn sphere_rule(
                         };
                         let c2 = add(&c, &mul(&dist, &u));
                         let sp2 = sphere_points(&c2, &r2, g);
-                        let e1 = wedge_all(&[cpoint(&sp[0]), cpoint(&sp[1]), cpoint(&sp[2]), cpoint(&sp[3])]);
-                        let e2 = wedge_all(&[cpoint(&sp2[0]), cpoint(&sp2[1]), cpoint(&sp2[2]), cpoint(&sp2[3])]);
+                        let e1 = wedge_all(&[
+                            cpoint(&sp[0]),
+                            cpoint(&sp[1]),
+                            cpoint(&sp[2]),
+                            cpoint(&sp[3]),
+                        ]);
+                        let e2 = wedge_all(&[
+                            cpoint(&sp2[0]),
+                            cpoint(&sp2[1]),
+                            cpoint(&sp2[2]),
+                            cpoint(&sp2[3]),
+                        ]);
                         let mut pts = sp.to_vec();
                         pts.extend(sp2.iter().cloned());
                         (vec!["a", "b", "c", "d", "q", "w", "p", "z"], pts, e1, e2)

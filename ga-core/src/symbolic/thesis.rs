@@ -357,7 +357,7 @@ impl SymMultivector {
         let mut out = String::new();
         for (i, (name, p)) in terms.iter().enumerate() {
             let name = if style == Style::Latex {
-                latex_blade(&name)
+                latex_blade(name)
             } else {
                 name.clone()
             };
@@ -670,7 +670,9 @@ mod tests {
     #[test]
     fn defs_expand() {
         let mut s = Scope::new();
-        s.point("x1", ["a1", "a2", "a3"]).define("k", "x1^2 + 1").define("j", "2k");
+        s.point("x1", ["a1", "a2", "a3"])
+            .define("k", "x1^2 + 1")
+            .define("j", "2k");
         let v = s.parse("j e1").unwrap();
         let ex = s.expand(&v).unwrap();
         assert_eq!(ex, s.parse("2(a1^2 + a2^2 + a3^2 + 1) e1").unwrap());
