@@ -35,7 +35,9 @@ ga_macros::algebra! {
         Quadvector: grade 4,
         /// A multiple of the pseudoscalar `I = e12345`.
         Pseudoscalar: grade 5,
-        /// The even subalgebra: rotors, translators, dilators and their products.
+        /// Scalar plus bivector: rotors, translators and dilators (each a product of two vectors).
+        Rotor: grades 0 2,
+        /// The even subalgebra: motors and every other product of rotors, translators and dilators.
         Even: grades 0 2 4,
         /// The odd elements: reflections and other odd versors.
         Odd: grades 1 3 5,

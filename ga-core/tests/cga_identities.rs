@@ -1,6 +1,6 @@
 //! Conformal identities of the generated Cl(4,1), in f64 and exactly.
 
-use ga_core::cga::{self, n_0, n_inf, up, up_generic, Bivector, Even, Multivector, Vector};
+use ga_core::cga::{self, n_0, n_inf, up, up_generic, Bivector, Multivector, Rotor, Vector};
 use ga_core::prelude::*;
 use ga_core::scalar::Rational;
 use nalgebra::Point3;
@@ -18,8 +18,8 @@ fn null_vectors_and_their_product() {
     assert_eq!(no.scalar_product(&no), r(0, 1));
     assert_eq!(ni.scalar_product(&no), r(-1, 1));
     // The geometric squares are zero as multivectors too.
-    assert_eq!(ni.clone() * ni, Even::zero());
-    assert_eq!(no.clone() * no, Even::zero());
+    assert_eq!(ni.clone() * ni, Rotor::zero());
+    assert_eq!(no.clone() * no, Rotor::zero());
 }
 
 #[test]
