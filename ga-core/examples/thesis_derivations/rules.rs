@@ -7,7 +7,7 @@ use ga_core::symbolic::thesis::{Entry, Fixture, Scope, SymMultivector};
 use ga_core::symbolic::Poly;
 use num_traits::{Signed, Zero};
 
-use super::{gp, lc, n_inf, point2, thesis_dual, wedge_all, Verdict};
+use super::{gp, lc, n_inf, point2, thesis_dual, wedge_all, Ctx, Verdict};
 
 type V3 = [Rational; 3];
 
@@ -174,19 +174,15 @@ fn sign_word(s: i32, what: &str) -> String {
 const CASES: usize = 12;
 
 pub fn check_rule(
-    fx: &Fixture,
+    ctx: &Ctx,
     e: &Entry,
     scope: &Scope,
     kind: &str,
     method: &mut String,
     detail: &mut String,
 ) -> Verdict {
-    let formula_of = |id: &str| {
-        fx.entry(id)
-            .and_then(|x| x.field("formula"))
-            .unwrap_or("0")
-            .to_string()
-    };
+    let fx = ctx.fx;
+    let formula_of = |id: &str| ctx.formula_of(id);
     let mut g = Lcg(0x5eed_0000 + kind.len() as u64);
     match kind {
         "rule_line_line" => {
@@ -235,18 +231,31 @@ pub fn check_rule(
                             }
                         },
                     };
+                    let parallel = is_zero3(&cross(&sub(&b, &a), &sub(&d, &c)));
                     let v = scalar_of(&eval(scope, f, &bind(&["a", "b", "c", "d"], &[a, b, c, d])));
                     let seen = if v.is_zero() {
                         "value = 0"
                     } else {
                         "value ≠ 0"
                     };
-                    let predicted_meet = v.is_zero();
+                    // Corrected rule: value = 0 and non-parallel directions.
+                    let predicted_meet = v.is_zero() && (!ctx.corrected || !parallel);
                     if predicted_meet != (class == "intersecting") {
                         wrong = true;
                     }
                     t.add(class, seen);
                 }
+            }
+            if ctx.corrected {
+                t.render(
+                    "Corrected rule \"value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet\":",
+                    detail,
+                );
+                return if wrong {
+                    Verdict::RuleFails
+                } else {
+                    Verdict::RuleHolds
+                };
             }
             t.render("Rule \"value = 0 ⇔ the lines intersect\":", detail);
             // Symbolic: the value is a multiple of the coplanarity determinant.
@@ -284,15 +293,29 @@ pub fn check_rule(
         }
         "rule_line_plane" => {
             *method = format!(
-                "printed B (II.56), B² (II.59) and the sub-expression on {CASES} exact cases per class"
+                "printed B (II.56), B² (II.59) and the sub-expression on {CASES} exact cases per \
+                 class, including axis-aligned configurations; \"B = 0\" is read as B² = 0, \
+                 since the cases are stated for \"this last expression\" B²"
             );
             let (fb, fb2) = (formula_of("II.56"), formula_of("II.59"));
             let sub_f = e.field("formula").unwrap_or("0");
             let mut t = Tally::default();
             let mut wrong = false;
-            for class in ["crossing", "parallel, off the plane", "in the plane"] {
+            for class in [
+                "crossing",
+                "parallel, off the plane",
+                "parallel, off the plane (axis-aligned)",
+                "in the plane",
+            ] {
                 for _ in 0..CASES {
-                    let (c, d, qq) = (g.v3(), g.v3(), g.v3());
+                    let (c, d, qq) = if class.ends_with("(axis-aligned)") {
+                        let c = g.v3();
+                        let d = add(&c, &[g.radius(), q(0, 1), q(0, 1)]);
+                        let qq = add(&c, &[q(0, 1), g.radius(), q(0, 1)]);
+                        (c, d, qq)
+                    } else {
+                        (g.v3(), g.v3(), g.v3())
+                    };
                     let nrm = cross(&sub(&d, &c), &sub(&qq, &c));
                     if is_zero3(&nrm) {
                         continue;
@@ -309,6 +332,12 @@ pub fn check_rule(
                             let a = add(&add(&c, &in1), &nrm);
                             (a.clone(), add(&a, &in2))
                         }
+                        "parallel, off the plane (axis-aligned)" => {
+                            let a = add(&g.v3(), &[q(0, 1), q(0, 1), q(0, 1)]);
+                            let a = [a[0].clone(), a[1].clone(), &c[2] + g.radius()];
+                            let b = add(&a, &[g.radius(), q(0, 1), q(0, 1)]);
+                            (a, b)
+                        }
                         _ => (add(&c, &in1), add(&c, &in2)),
                     };
                     let vals = bind(&["a", "b", "c", "d", "q"], &[a, b, c, d, qq]);
@@ -316,25 +345,37 @@ pub fn check_rule(
                     let b2 = sign(&scalar_of(&eval(scope, &fb2, &vals)));
                     let sz = scalar_of(&eval(scope, sub_f, &vals)).is_zero();
                     let seen = format!(
-                        "B {} , {}, sub-expression {}",
+                        "B {}, {}, sub-expression {}",
                         if bz { "= 0" } else { "≠ 0" },
                         sign_word(b2, "B²"),
                         if sz { "= 0" } else { "≠ 0" }
                     );
-                    let predicted = if !bz {
+                    // Printed rule: B² decides parallel; the sub-expression decides "in the
+                    // plane". Corrected rule: B itself (all of it) decides "in the plane".
+                    let in_plane = if ctx.corrected { bz } else { sz };
+                    let predicted = if b2 != 0 {
                         "crossing"
-                    } else if sz {
+                    } else if in_plane {
                         "in the plane"
                     } else {
                         "parallel, off the plane"
                     };
-                    if predicted != class {
+                    if !class.starts_with(predicted) {
                         wrong = true;
                     }
                     t.add(class, &seen);
                 }
             }
             t.render("Printed quantities per ground-truth class:", detail);
+            if ctx.corrected {
+                let _ = writeln!(
+                    detail,
+                    "Corrected rule: B² > 0 ⇔ one point; B² = 0 and B = 0 (every coefficient) ⇔ the \
+                     line lies in the plane; B² = 0 and B ≠ 0 ⇔ parallel and off the plane. The \
+                     single coefficient (−ω3β3 + ω4β2 + ω1β6) of e3e also vanishes for lines parallel \
+                     to the plane and off it (axis-aligned rows)."
+                );
+            }
             if wrong {
                 Verdict::RuleFails
             } else {
@@ -342,7 +383,10 @@ pub fn check_rule(
             }
         }
         "rule_plane_plane" => {
-            *method = format!("printed B (II.66) and B² (II.69) on {CASES} exact cases per class");
+            *method = format!(
+                "printed B (II.66) and B² (II.69) on {CASES} exact cases per class; \"B = 0\" is \
+                 read as B² = 0"
+            );
             let (fb, fb2) = (formula_of("II.66"), formula_of("II.69"));
             let mut t = Tally::default();
             let mut wrong = false;
@@ -376,7 +420,9 @@ pub fn check_rule(
                         if bz { "= 0" } else { "≠ 0" },
                         sign_word(b2, "B²")
                     );
-                    let predicted_parallel = bz;
+                    // "B = 0" read as B² = 0 (the cases follow the computation of B²).
+                    let _ = bz;
+                    let predicted_parallel = b2 == 0;
                     if predicted_parallel == (class == "intersecting") {
                         wrong = true;
                     }
