@@ -9,12 +9,14 @@
 #![warn(missing_docs)]
 
 pub mod adversarial;
+pub mod bvh;
 pub mod error;
 pub mod euclid;
 pub mod filter;
 pub mod intersect;
 pub mod oracle;
 pub mod predicates;
+pub mod query;
 pub mod shapes;
 
 pub use error::GeometryError;
