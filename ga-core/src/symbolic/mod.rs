@@ -19,7 +19,18 @@
 //! ```
 //!
 //! The same works for multivectors of the generated algebras, whose coefficients may be any
-//! [`Ring`]: build them from `Poly` coefficients and use the products as usual.
+//! [`Ring`]: build them from `Poly` coefficients and use the products as usual. Expanding
+//! `a ∧ b` for two symbolic conformal vectors, printed plainly, in LaTeX, and in the thesis's
+//! notation ([`thesis`]):
+//!
+//! ```
+//! use ga_core::{cga::{Multivector, Vector}, prelude::*, symbolic::{thesis, Poly}};
+//! let v = |s: &str| Vector::new(Poly::var(&format!("{s}1")), Poly::var(&format!("{s}2")), Poly::var(&format!("{s}3")), Poly::var(&format!("{s}4")), Poly::var(&format!("{s}5")));
+//! let ab = v("a").wedge(&v("b"));                       // a Bivector<Poly>, fully expanded
+//! println!("{ab}\n{}", ab.e12.to_latex());             // (a1*b2 - a2*b1)e12 + ...
+//! println!("{}", thesis::SymMultivector::from(&Multivector::from(ab.clone())).to_notation(thesis::Notation::Thesis));
+//! assert_eq!(ab.e12, Poly::parse("a1*b2 - a2*b1").unwrap());
+//! ```
 
 mod parse;
 pub mod thesis;

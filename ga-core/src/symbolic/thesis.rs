@@ -420,6 +420,13 @@ fn latex_blade(name: &str) -> String {
     s
 }
 
+impl From<&crate::cga::Multivector<Poly>> for SymMultivector {
+    /// The same multivector, for printing in the thesis's notation or comparing.
+    fn from(m: &crate::cga::Multivector<Poly>) -> Self {
+        SymMultivector::from_coefficients(&m.coefficients())
+    }
+}
+
 impl Value for SymMultivector {
     fn constant(c: Rational) -> Self {
         Self::scalar(Poly::constant(c))
