@@ -322,6 +322,41 @@ pub const CORRECTED_FORMULAS: &[(&str, &str)] = &[
     ),
 ];
 
+/// One-line summaries of what is wrong, for the report's table (the details are computed).
+pub const NOTES: &[(&str, &str)] = &[
+    ("A.14", "a misplaced bracket: the eē terms lose the factor 4 ((A.16) is right)"),
+    ("II.25", "the second term repeats x1∧x2∧n∧n̄; it must be x1∧x3∧n∧n̄ ((A.23) is right)"),
+    ("A.95", "the e2 coefficient is printed 1; it must be a2 ((II.40) is right)"),
+    ("A.96", "the e1 coefficient is printed 1; it must be a1"),
+    (
+        "A.97",
+        "the e3 coefficient is printed 1 (must be a3) and both sin·cos terms have the wrong sign for B = e1e2",
+    ),
+    (
+        "II.53",
+        "has grade-3 terms: it is ⟨(I L1) L2⟩₁₊₃, not an inner product, whose value is the grade-1 part",
+    ),
+    ("II.56", "the e2ē coefficient has −ω1β5; it must be +ω1β5"),
+    ("II.62", "μ1…μ5 inherit the misprinted α234, α314 of (II.63)"),
+    ("II.63", "α234 and α314 misprinted (d1w2w3 for d1q2w3, w1c2w3 for q1c2w3)"),
+    ("II.64", "the e3e square (μ5β2 + μ1β6 − μ4β3)² must be subtracted, not added"),
+    (
+        "II.78d",
+        "the μ of (II.62) belong to the sphere P3…P6; E1 = P1…P4 needs those of (II.72)",
+    ),
+    ("II.79", "λ1 ends in α123(x7² − 1); it must be α123(x8² − 1)"),
+    (
+        "II.54",
+        "the scalar is the coplanarity determinant: it also vanishes for parallel lines",
+    ),
+    (
+        "II.59r",
+        "\"B = 0\" must be read B² = 0, and the in-plane test (one coefficient) also vanishes off the plane",
+    ),
+    ("II.64r", "holds once (II.63) and (II.64) are corrected"),
+    ("II.82r", "holds once μ is taken from (II.72) and λ1 (II.79) is corrected"),
+];
+
 /// Corrected auxiliary definitions `(equation, symbol, definition)`.
 pub const CORRECTED_LETS: &[(&str, &str, &str)] = &[
     (
@@ -1131,9 +1166,16 @@ pub fn document(rows: &[Row]) -> String {
          classification rules, *rule correct* / *rule wrong* against Euclidean ground truth \
          computed independently in exact rational arithmetic.\n\n",
     );
-    s.push_str("## Summary\n\n| eq. | verdict | formula |\n|---|---|---|\n");
+    s.push_str("## Summary\n\n| eq. | formula | verdict | what |\n|---|---|---|---|\n");
     for r in rows {
-        let _ = writeln!(s, "| {} | {} | {} |", r.id, r.verdict.label(), r.title);
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} |",
+            r.id,
+            r.title,
+            r.verdict.label(),
+            note(r)
+        );
     }
     s.push('\n');
     let count = |k: &str| rows.iter().filter(|r| r.verdict.key() == k).count();
@@ -1171,4 +1213,15 @@ pub fn document(rows: &[Row]) -> String {
         }
     }
     s
+}
+
+/// The "what" column: the hand-written summary of an erratum, or the factor of a scaled entry.
+fn note(r: &Row) -> String {
+    if let Some(n) = lookup2(NOTES, &r.id) {
+        return n.to_string();
+    }
+    match &r.verdict {
+        Verdict::Scaled(k) => format!("computed = {} × printed", invert(k)),
+        _ => String::new(),
+    }
 }

@@ -376,6 +376,10 @@ pub fn check_rule(
                      to the plane and off it (axis-aligned rows)."
                 );
             }
+            let n = normal(["c", "d", "q"]);
+            let dir = diff_p("a", "b");
+            let target = dot_p(&n, &dir).pow(2);
+            prove(scope, &fb2, &target, "((x4 − x3) × (x5 − x3) · (x1 − x2))², the squared product of the plane's normal and the line's direction, which vanishes exactly when the line is parallel to the plane", detail);
             if wrong {
                 Verdict::RuleFails
             } else {
@@ -435,6 +439,10 @@ pub fn check_rule(
                 "Coincident planes are counted as parallel by the rule (B = 0), which is how the \
                  thesis's two cases read."
             );
+            let n1 = normal(["a", "b", "c"]);
+            let n2 = normal(["d", "q", "w"]);
+            let target = norm2(&cross_p(&n1, &n2));
+            prove(scope, &fb2, &target, "|n1 × n2|², n1 = (x2 − x1) × (x3 − x1), n2 = (x5 − x4) × (x6 − x4), which vanishes exactly for parallel (or coincident) planes", detail);
             if wrong {
                 Verdict::RuleFails
             } else {
@@ -599,5 +607,51 @@ fn sphere_rule(
         Verdict::RuleFails
     } else {
         Verdict::RuleHolds
+    }
+}
+
+// Symbolic helpers for the proofs: vectors of polynomials in the point coordinates.
+
+fn coord(l: &str, i: usize) -> Poly {
+    Poly::var(&format!("{l}{i}"))
+}
+fn diff_p(x: &str, y: &str) -> [Poly; 3] {
+    [1, 2, 3].map(|i| coord(x, i) - coord(y, i))
+}
+fn cross_p(a: &[Poly; 3], b: &[Poly; 3]) -> [Poly; 3] {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+fn dot_p(a: &[Poly; 3], b: &[Poly; 3]) -> Poly {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+fn norm2(a: &[Poly; 3]) -> Poly {
+    dot_p(a, a)
+}
+/// The normal (x2 − x1) × (x3 − x1) of the plane through three points.
+fn normal(l: [&str; 3]) -> [Poly; 3] {
+    cross_p(&diff_p(l[1], l[0]), &diff_p(l[2], l[0]))
+}
+
+/// Proves `formula = k · target` as a polynomial identity in the point coordinates and says so.
+fn prove(scope: &Scope, formula: &str, target: &Poly, what: &str, detail: &mut String) {
+    let full = scope
+        .expand(&scope.parse(formula).expect("parses"))
+        .expect("expands")
+        .get(0);
+    match full.ratio_to(target) {
+        Some(k) => {
+            let _ = writeln!(
+                detail,
+                "\nProved symbolically: B² = {} · {what}.",
+                super::rat_str(&k)
+            );
+        }
+        None => {
+            let _ = writeln!(detail, "\nB² is not a constant multiple of {what}.");
+        }
     }
 }
