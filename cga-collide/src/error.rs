@@ -36,4 +36,25 @@ pub enum GeometryError {
         /// The rejected value.
         value: f64,
     },
+    /// An input of a conformal constructor (a coordinate, a scalar or a blade coefficient) is
+    /// NaN or infinite.
+    #[error("{constructor}: argument `{argument}` has a non-finite value ({value})")]
+    NonFiniteInput {
+        /// The constructor, e.g. `"conformal::Line::from_points"`.
+        constructor: &'static str,
+        /// The argument name, with the component when it has several (`"a.x"`, `"normal.z"`).
+        argument: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// The input of a conformal constructor does not define the requested object (coincident
+    /// points for a line, collinear points for a plane, coplanar points for a sphere, a zero
+    /// normal, a non-positive scale factor, ...). Decided exactly for the `f64` inputs.
+    #[error("{constructor}: degenerate input: {reason}")]
+    Degenerate {
+        /// The constructor, e.g. `"conformal::Plane::from_points"`.
+        constructor: &'static str,
+        /// What is degenerate, e.g. `"points a, b, c are collinear"`.
+        reason: &'static str,
+    },
 }

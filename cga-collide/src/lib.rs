@@ -4,12 +4,16 @@
 //!   [`Ball`] (solid), built by fallible constructors ([`GeometryError`]).
 //! * [`intersect`]: exact tests `a.intersects(&b)` ([`Intersects`]) between them, built on the
 //!   certified polynomial predicates of [`predicates`] and [`filter`].
+//! * [`conformal`]: the conformal primitives (points, point pairs, lines, circles, planes,
+//!   spheres, flat points) as typed blades of `ga_core::cga`, versors acting on them, and the
+//!   exact meet classification of the thesis's six pairs ([`conformal::meet`]).
 //! * [`euclid`]: Euclidean `f64` reference tests (Möller 1997, Möller–Trumbore, sphere tests).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod adversarial;
 pub mod bvh;
+pub mod conformal;
 pub mod error;
 pub mod euclid;
 pub mod filter;
