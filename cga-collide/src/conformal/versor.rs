@@ -59,7 +59,7 @@ impl Versor {
     /// The translator `T = 1 + ½ n_inf t` (the thesis's (II.33)): `x ↦ x + t`.
     pub fn translator(t: Vector3<f64>) -> Result<Self, GeometryError> {
         finite3("conformal::Versor::translator", ["t.x", "t.y", "t.z"], &t)?;
-        let nt: Even<f64> = super::n_inf::<f64>() * Vector::from(t);
+        let nt = Even::from(super::n_inf::<f64>() * Vector::from(t));
         Ok(Versor {
             even: Versor::identity().even + nt * 0.5,
         })
