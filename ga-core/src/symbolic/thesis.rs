@@ -21,6 +21,7 @@
 //! let l = scope.parse("e1 ∧ e3 ∧ ē").unwrap();
 //! assert_eq!(l.to_notation(Notation::Thesis), "-e3e1ē");
 //! assert_eq!(l.to_notation(Notation::Canonical), "e135");
+//! assert_eq!(x.to_notation(Notation::ThesisNull), "2*a1 e1 + 2*a2 e2 + (a1^2 + a2^2) n - n̄");
 //! ```
 
 use std::collections::{BTreeMap, HashMap};
@@ -149,6 +150,10 @@ pub enum Notation {
     Canonical,
     /// The thesis's names (`e3e1ē`) and signs, in its usual order.
     Thesis,
+    /// The thesis's null basis: Euclidean blades times `1`, `n`, `n̄` or `n∧n̄` (using
+    /// `e = (n + n̄)/2`, `ē = (n − n̄)/2`, `eē = −½ n∧n̄`), so that the point `2·up(x)` prints as
+    /// the thesis's `2x + x²n − n̄`.
+    ThesisNull,
 }
 
 /// A sparse multivector of Cl(4,1) with polynomial coefficients, keyed by blade bitmask.
@@ -334,6 +339,7 @@ impl SymMultivector {
         let order: Vec<u8> = match notation {
             Notation::Canonical => canonical_masks().to_vec(),
             Notation::Thesis => thesis_order(),
+            Notation::ThesisNull => return self.null_terms(),
         };
         order
             .into_iter()
@@ -341,7 +347,7 @@ impl SymMultivector {
                 let p = self.coeffs.get(&m)?;
                 Some(match notation {
                     Notation::Canonical => (canonical_name(m), p.clone()),
-                    Notation::Thesis => {
+                    _ => {
                         let (s, n) = thesis_name(m);
                         (n, if s < 0 { -p } else { p.clone() })
                     }
@@ -349,6 +355,62 @@ impl SymMultivector {
             })
             .collect()
     }
+    /// Terms in the null basis (see [`Notation::ThesisNull`]).
+    fn null_terms(&self) -> Vec<(String, Poly)> {
+        let half = Poly::ratio(1, 2).unwrap_or_default();
+        let mut out = Vec::new();
+        // Euclidean parts in the thesis's order.
+        for e in [0u8, 1, 2, 4, 3, 6, 5, 7] {
+            let (sign, name) = thesis_name(e);
+            let fix = |p: Poly| if sign < 0 { -p } else { p };
+            let c = |m: u8| fix(self.get(e | m));
+            let (c0, ce, cb, ceb) = (c(0), c(8), c(16), c(24));
+            let join = |suffix: &str| {
+                if name == "1" {
+                    suffix.to_string()
+                } else if suffix.is_empty() {
+                    name.clone()
+                } else {
+                    format!("{name}{suffix}")
+                }
+            };
+            let parts = [
+                (join(""), c0),
+                (join("n"), &(&ce + &cb) * &half),
+                (join("n̄"), &(&ce - &cb) * &half),
+                (join("nn̄"), -(&ceb * &half)),
+            ];
+            for (n, p) in parts {
+                if !p.is_zero() {
+                    out.push((if n.is_empty() { "1".into() } else { n }, p));
+                }
+            }
+        }
+        out.sort_by_key(|(n, _)| {
+            let g = n.matches('e').count() + n.matches('n').count();
+            (g, n.contains('n'))
+        });
+        out
+    }
+
+    /// The thesis's dual `A* = I A` with `I = e1e2e3eē` (the negative of our `dual`).
+    pub fn thesis_dual(&self) -> Self {
+        SymMultivector::blade(31, <Poly as Ring>::one()).gp(self)
+    }
+
+    /// The thesis's point `F(x) = 2x + x²n − n̄` (= `2·up(x)`).
+    pub fn thesis_point(x: [Poly; 3]) -> Self {
+        let [a, b, c] = x;
+        let sq = &(&(&a * &a) + &(&b * &b)) + &(&c * &c);
+        let two = Poly::from(2);
+        let one = <Poly as Ring>::one();
+        SymMultivector::blade(1, &two * &a)
+            .add(&SymMultivector::blade(2, &two * &b))
+            .add(&SymMultivector::blade(4, &two * &c))
+            .add(&SymMultivector::blade(8, &sq - &one))
+            .add(&SymMultivector::blade(16, &sq + &one))
+    }
+
     fn render(&self, notation: Notation, style: Style) -> String {
         let terms = self.terms(notation);
         if terms.is_empty() {
@@ -455,37 +517,55 @@ impl Value for SymMultivector {
     }
 }
 
-/// Reads a product of thesis basis symbols (`e1e2e`, `e3e1ē`, `e2eebar`) as a blade.
+/// Reads a word of thesis basis symbols as a blade: `e1e2e`, `e3e1ē`, `e2eebar` (geometric
+/// product of the symbols), or, in the null basis, words with `n` and `n̄`/`nbar` such as
+/// `e1n`, `e3e1n̄`, `nn̄` (outer product of the symbols).
 fn parse_blade_word(word: &str) -> Option<SymMultivector> {
+    let one = <Poly as Ring>::one;
+    let e = |bit: u8| SymMultivector::blade(1 << bit, one());
     let mut rest = word;
-    let mut acc = SymMultivector::scalar(<Poly as Ring>::one());
+    let mut symbols: Vec<SymMultivector> = Vec::new();
+    let mut null = false;
     if rest.is_empty() {
         return None;
     }
     while !rest.is_empty() {
-        let (bit, len) = if let Some(r) = rest.strip_prefix("ebar") {
-            (4, rest.len() - r.len())
+        let (sym, len) = if rest.starts_with("ebar") {
+            (e(4), 4)
+        } else if rest.starts_with("nbar") {
+            null = true;
+            (e(3).sub(&e(4)), 4)
+        } else if rest.starts_with("n\u{304}") {
+            null = true;
+            (e(3).sub(&e(4)), 1 + '\u{304}'.len_utf8())
+        } else if rest.starts_with('n') {
+            null = true;
+            (e(3).add(&e(4)), 1)
         } else if rest.starts_with("e1") {
-            (0, 2)
+            (e(0), 2)
         } else if rest.starts_with("e2") {
-            (1, 2)
+            (e(1), 2)
         } else if rest.starts_with("e3") {
-            (2, 2)
+            (e(2), 2)
         } else if rest.starts_with("e4") {
-            (3, 2)
+            (e(3), 2)
         } else if rest.starts_with("e5") {
-            (4, 2)
+            (e(4), 2)
         } else if rest.starts_with('ē') {
-            (4, 'ē'.len_utf8())
+            (e(4), 'ē'.len_utf8())
         } else if rest.starts_with("e\u{304}") {
-            (4, 1 + '\u{304}'.len_utf8())
+            (e(4), 1 + '\u{304}'.len_utf8())
         } else if rest.starts_with('e') {
-            (3, 1)
+            (e(3), 1)
         } else {
             return None;
         };
-        acc = acc.gp(&SymMultivector::blade(1 << bit, <Poly as Ring>::one()));
+        symbols.push(sym);
         rest = &rest[len..];
+    }
+    let mut acc = SymMultivector::scalar(one());
+    for sym in &symbols {
+        acc = if null { acc.wedge(sym) } else { acc.gp(sym) };
     }
     Some(acc)
 }
@@ -672,6 +752,36 @@ mod tests {
             let b = s.parse(&name).unwrap();
             assert_eq!(b.get(m), Poly::from(i64::from(sign)), "{name}");
         }
+    }
+
+    #[test]
+    fn null_basis_printing_and_helpers() {
+        let s = Scope::new();
+        for text in [
+            "n",
+            "n̄",
+            "n ∧ n̄",
+            "e1 ∧ n",
+            "e3e1 ∧ n̄",
+            "3 e1e2e3 ∧ n ∧ n̄ + e2",
+            "x e1e2e + y e2eē - z e3e1ē + 2 e",
+        ] {
+            let m = s.parse(text).unwrap();
+            let printed = m.to_notation(Notation::ThesisNull);
+            assert_eq!(s.parse(&printed).unwrap(), m, "{text} printed as {printed}");
+            let printed = m.to_notation(Notation::Thesis);
+            assert_eq!(s.parse(&printed).unwrap(), m, "{text} printed as {printed}");
+        }
+        assert_eq!(s.parse("nn̄").unwrap(), s.parse("-2 eē").unwrap());
+        let p = SymMultivector::thesis_point([Poly::var("a1"), Poly::var("a2"), Poly::var("a3")]);
+        assert_eq!(
+            p,
+            s.parse("2(a1 e1 + a2 e2 + a3 e3) + (a1^2 + a2^2 + a3^2) n - n̄")
+                .unwrap()
+        );
+        assert!(p.gp(&p).is_zero(), "points are null");
+        let l = s.parse("e1e2e").unwrap();
+        assert_eq!(l.thesis_dual(), s.parse("I e1e2e").unwrap());
     }
 
     #[test]
