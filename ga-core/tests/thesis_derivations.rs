@@ -34,6 +34,8 @@ const EXPECTED: &[(&str, &str)] = &[
     ("A.97", "differs"),
     ("II.44", "confirmed"),
     ("II.50", "scaled"),
+    ("A.103", "confirmed"),
+    ("A.105", "confirmed"),
     ("II.53", "differs"),
     ("II.54", "rule-fails"),
     ("II.56", "differs"),
@@ -133,9 +135,9 @@ fn every_fixture_entry_is_checked_and_listed() {
     // The list: every formula it names is in the fixture.
     for id in [
         "II.5", "II.7", "II.11", "II.12", "II.16", "A.14", "A.16", "A.31", "II.26e", "II.35a",
-        "II.35b", "II.35c", "II.36", "II.40", "II.44", "II.50", "II.53", "II.54", "II.56", "II.59",
-        "II.61", "II.62", "II.63", "II.64", "II.66", "II.69", "II.71", "II.72", "II.73", "II.75",
-        "II.76", "II.78", "II.79", "II.80", "II.82",
+        "II.35b", "II.35c", "II.36", "II.40", "II.44", "II.50", "A.105", "II.53", "II.54", "II.56",
+        "II.59", "II.61", "II.62", "II.63", "II.64", "II.66", "II.69", "II.71", "II.72", "II.73",
+        "II.75", "II.76", "II.78", "II.79", "II.80", "II.82",
     ] {
         assert!(fx.entry(id).is_some(), "{id} missing from the fixture");
     }

@@ -741,6 +741,9 @@ fn evaluate(ctx: &Ctx, e: &Entry) -> (String, Verdict, String) {
             }
             v
         }
+        "reflect_pl" | "reflect_plp" => {
+            check_reflect(formula, &scope, kind, &mut method, &mut detail)
+        }
         k if k.starts_with("meet_") => check_meet(formula, &scope, k, &mut method, &mut detail),
         k if k.starts_with("defs_") => check_defs(fx, e, &scope, k, &mut method, &mut detail),
         k if k.starts_with("square_") => check_square(formula, &scope, k, &mut method, &mut detail),
@@ -1224,4 +1227,62 @@ fn note(r: &Row) -> String {
         Verdict::Scaled(k) => format!("computed = {} × printed", invert(k)),
         _ => String::new(),
     }
+}
+
+/// Reflection of a line in a plane (A.103, A.105), in the aux forms of both.
+fn check_reflect(
+    formula: &str,
+    scope: &Scope,
+    kind: &str,
+    method: &mut String,
+    detail: &mut String,
+) -> Verdict {
+    let (pl, ln) = (aux_mv(&plane_aux("omega")), aux_mv(&line_aux("beta")));
+    let pl_ln = gp(&pl, &ln);
+    let printed = parse_in(scope, formula);
+    let computed = if kind == "reflect_pl" {
+        *method = "P L (geometric product) of the aux forms of the plane and the line".into();
+        pl_ln
+    } else {
+        *method = "the e1eē, e2eē, e3eē part of P L P (geometric products) of the aux forms".into();
+        let full = gp(&pl_ln, &pl);
+        let part = [25u8, 26, 28]
+            .iter()
+            .fold(SymMultivector::zero(), |acc, &m| {
+                acc.add(&SymMultivector::blade(m, full.get(m)))
+            });
+        // Geometric sanity: the direction part is the Euclidean mirror image of the direction.
+        let n = [p("omega3"), p("omega4"), p("omega2")];
+        let d = [-p("beta4"), -p("beta5"), -p("beta6")];
+        let dot = |a: &[Poly; 3], b: &[Poly; 3]| -> Poly { (0..3).map(|i| &a[i] * &b[i]).sum() };
+        let (nd, nn) = (dot(&n, &d), dot(&n, &n));
+        let mirror = SymMultivector::from_coefficients(&[])
+            .add(&SymMultivector::blade(
+                25,
+                &(&nn * &d[0]) - &(&(&nd * &n[0]) * &Poly::from(2)),
+            ))
+            .add(&SymMultivector::blade(
+                26,
+                &(&nn * &d[1]) - &(&(&nd * &n[1]) * &Poly::from(2)),
+            ))
+            .add(&SymMultivector::blade(
+                28,
+                &(&nn * &d[2]) - &(&(&nd * &n[2]) * &Poly::from(2)),
+            ));
+        let _ = writeln!(
+            detail,
+            "Computed: the direction part of P L P is {} × (|n|² d − 2 (n·d) n) in the blades \
+             e1eē, e2eē, e3eē: the mirror image of the line's direction d = x2 − x1 in the plane \
+             with normal n = (ω3, ω4, ω2).\n",
+            part.ratio_to(&mirror)
+                .map(|k| rat_str(&k))
+                .unwrap_or_else(|| "not a multiple of".into())
+        );
+        part
+    };
+    let v = judge(&printed, &computed, detail);
+    if v == Verdict::Differs {
+        corrected(detail, &computed);
+    }
+    v
 }
