@@ -46,6 +46,50 @@
 //! assert!(matches!(line_sphere(&l, &s), LineSphere::Tangent(p) if (p - Point3::new(0.0, 1.0, 0.0)).norm() < 1e-12));
 //! # Ok::<(), cga_collide::GeometryError>(())
 //! ```
+//!
+//! # API tour
+//!
+//! ```
+//! use cga_collide::conformal::meet::{LinePlane, LineSphere, Meet, SpherePlane, SphereSphere};
+//! use cga_collide::conformal::{Line, Plane, Point, Reflection, Sphere, Transform, Versor};
+//! use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
+//!
+//! // Primitives from points (outer forms, as in the thesis) or from Euclidean data (inner forms).
+//! let l = Line::from_points(Point3::new(-2.0, 0.0, 1.0), Point3::new(2.0, 0.0, 1.0))?;
+//! let s = Sphere::from_centre_radius(Point3::origin(), 1.0)?;
+//! let p = Plane::from_normal_offset(Vector3::z(), 1.0)?; // z = 1
+//! let t = Sphere::from_points([Point3::new(1.0, 0.0, 0.0), Point3::new(-1.0, 0.0, 0.0),
+//!                              Point3::new(0.0, 1.0, 0.0), Point3::new(0.0, 0.0, -1.0)])?;
+//!
+//! // Exact classification of the meet; the variants carry f64 geometry.
+//! assert!(matches!(l.meet(&s), LineSphere::Tangent(x) if (x - Point3::new(0.0, 0.0, 1.0)).norm() < 1e-12));
+//! assert_eq!(l.meet(&p), LinePlane::Contained);
+//! assert!(matches!(s.meet(&p), SpherePlane::Tangent(_)));
+//! assert_eq!(s.meet(&t), SphereSphere::Coincident);
+//!
+//! // Tangency stays exact at any scale: the certified f64 filter defers to exact rationals.
+//! let k = 2f64.powi(400); // about 2.6e120: every f64 product overflows
+//! let a = Sphere::from_centre_radius(Point3::origin(), 5.0 * k)?;
+//! let b = Sphere::from_centre_radius(Point3::new(0.0, 8.0 * k, 0.0), 3.0 * k)?;
+//! assert!(matches!(a.meet(&b), SphereSphere::TangentExternal(_)));
+//!
+//! // Degenerate input is a typed error, decided exactly.
+//! assert!(Plane::from_points(Point3::origin(), Point3::new(1.0, 1.0, 1.0), Point3::new(2.0, 2.0, 2.0)).is_err());
+//!
+//! // Versors: translators, rotors, dilators, reflections, and nalgebra isometries.
+//! let iso = Isometry3::new(Vector3::new(0.0, 0.0, 5.0), Vector3::y() * std::f64::consts::FRAC_PI_2);
+//! let moved = s.transform(&Versor::from(iso))?;
+//! assert!((moved.centre() - Point3::new(0.0, 0.0, 5.0)).norm() < 1e-12);
+//! let grown = s.transform(&Versor::dilator(3.0)?)?;
+//! assert!((grown.radius().unwrap() - 3.0).abs() < 1e-12);
+//! let mirrored = Point::new(Point3::new(0.0, 0.0, 3.0))?.reflect(&Reflection::new(&p))?;
+//! assert!((mirrored.position().unwrap() - Point3::new(0.0, 0.0, -1.0)).norm() < 1e-12);
+//!
+//! // Outer ↔ inner forms (dual(A) = A I⁻¹) and back to Euclidean data.
+//! let p2 = Plane::from_blade(*p.blade())?;
+//! assert_eq!((p2.normal(), p2.offset()), (Vector3::z(), 1.0));
+//! # Ok::<(), cga_collide::GeometryError>(())
+//! ```
 
 use core::cmp::Ordering;
 
@@ -399,6 +443,19 @@ impl Line {
         }
         let p = checked_point3(C, "the support point is not finite", support_point_of(&t))?;
         Line::from_point_direction(p, unit(d))
+    }
+    /// The line of an IPNS bivector (`from_blade(undual(L*))`).
+    ///
+    /// ```
+    /// use cga_collide::conformal::Line;
+    /// use cga_collide::nalgebra::{Point3, Vector3};
+    /// let l = Line::from_point_direction(Point3::new(1.0, 2.0, 3.0), Vector3::z())?;
+    /// let m = Line::from_ipns(l.ipns())?;
+    /// assert_eq!((m.support_point(), m.direction()), (Point3::new(1.0, 2.0, 0.0), Vector3::z()));
+    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// ```
+    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, GeometryError> {
+        Line::from_blade(b.undual())
     }
     fn build(def: LineDef) -> Self {
         Line {
@@ -944,6 +1001,38 @@ impl Circle {
             blade: s.ipns().wedge(&p.ipns()).undual(),
         })
     }
+    /// The circle of an OPNS trivector (any nonzero multiple of `P1 ∧ P2 ∧ P3`). Fails on
+    /// non-finite coefficients and when `C ∧ n_inf = 0` in `f64` (a line or zero: no carrier
+    /// plane). The blade is kept as given (rounded data is taken as exact).
+    ///
+    /// ```
+    /// use cga_collide::conformal::{Circle, Line};
+    /// use cga_collide::nalgebra::{Point3, Vector3};
+    /// let c = Circle::from_centre_normal_radius(Point3::origin(), Vector3::z(), 2.0)?;
+    /// assert_eq!(Circle::from_blade(*c.blade())?, c);
+    /// assert_eq!(Circle::from_ipns(c.ipns())?, c);
+    /// let l = Line::from_point_direction(Point3::origin(), Vector3::z())?;
+    /// assert!(Circle::from_blade(*l.blade()).is_err());
+    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// ```
+    pub fn from_blade(blade: Trivector<f64>) -> Result<Self, GeometryError> {
+        const C: &str = "conformal::Circle::from_blade";
+        finite_blade(C, blade)?;
+        if coeffs(blade.wedge(&n_inf::<f64>()))
+            .iter()
+            .all(|c| *c == 0.0)
+        {
+            return Err(degenerate(
+                C,
+                "C ∧ n_inf is zero (a line, or the zero blade)",
+            ));
+        }
+        Ok(Circle { blade })
+    }
+    /// The circle of an IPNS bivector (`from_blade(undual(C*))`).
+    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, GeometryError> {
+        Circle::from_blade(b.undual())
+    }
     pub(crate) fn from_blade_unchecked(blade: Trivector<f64>) -> Self {
         Circle { blade }
     }
@@ -1009,6 +1098,37 @@ impl PointPair {
         Ok(PointPair {
             blade: embed::<f64>(&a).wedge(&embed(&b)),
         })
+    }
+    /// The point pair of an OPNS bivector (any nonzero multiple of `P1 ∧ P2`). Fails on
+    /// non-finite coefficients and when `T ∧ n_inf = 0` in `f64` (a flat point, or zero). The
+    /// blade is kept as given; it may be imaginary ([`PointPair::points`] is then `None`).
+    ///
+    /// ```
+    /// use cga_collide::conformal::{FlatPoint, PointPair};
+    /// use cga_collide::nalgebra::Point3;
+    /// let t = PointPair::from_points(Point3::origin(), Point3::new(0.0, 0.0, 2.0))?;
+    /// assert_eq!(PointPair::from_ipns(t.ipns())?, t);
+    /// let f = FlatPoint::new(Point3::origin())?;
+    /// assert!(PointPair::from_blade(*f.blade()).is_err());
+    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// ```
+    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, GeometryError> {
+        const C: &str = "conformal::PointPair::from_blade";
+        finite_blade(C, blade)?;
+        if coeffs(blade.wedge(&n_inf::<f64>()))
+            .iter()
+            .all(|c| *c == 0.0)
+        {
+            return Err(degenerate(
+                C,
+                "T ∧ n_inf is zero (a flat point, or the zero blade)",
+            ));
+        }
+        Ok(PointPair { blade })
+    }
+    /// The point pair of an IPNS trivector (`from_blade(undual(T*))`).
+    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, GeometryError> {
+        PointPair::from_blade(t.undual())
     }
     pub(crate) fn from_blade_unchecked(blade: Bivector<f64>) -> Self {
         PointPair { blade }
@@ -1078,6 +1198,28 @@ impl FlatPoint {
         Ok(FlatPoint {
             blade: embed::<f64>(&x).wedge(&n_inf::<f64>()),
         })
+    }
+    /// The flat point of an OPNS bivector (any nonzero multiple of `F(x) ∧ n_inf`): built
+    /// from the `f64` position read from it. Fails on non-finite coefficients and on a flat
+    /// point at infinity (zero weight).
+    ///
+    /// ```
+    /// use cga_collide::conformal::FlatPoint;
+    /// use cga_collide::nalgebra::Point3;
+    /// let f = FlatPoint::new(Point3::new(1.0, 2.0, 3.0))?;
+    /// assert_eq!(FlatPoint::from_ipns(f.ipns())?, f);
+    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// ```
+    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, GeometryError> {
+        const C: &str = "conformal::FlatPoint::from_blade";
+        finite_blade(C, blade)?;
+        let x = flat_point_location(&blade)
+            .ok_or_else(|| degenerate(C, "the weight is zero (a flat point at infinity)"))?;
+        FlatPoint::new(x)
+    }
+    /// The flat point of an IPNS trivector (`from_blade(undual(F*))`).
+    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, GeometryError> {
+        FlatPoint::from_blade(t.undual())
     }
     pub(crate) fn from_blade_unchecked(blade: Bivector<f64>) -> Self {
         FlatPoint { blade }
