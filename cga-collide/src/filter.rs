@@ -12,20 +12,23 @@
 use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
 
-use ga_core::scalar::{rational_from_f64, Rational, Ring};
+use ga_core::scalar::{Rational, Ring};
 use num_traits::Signed;
 
 /// Unit roundoff doubled (`2^-52`): per-operation relative error charged by [`ErrF64`]; the
 /// factor two also pays for the rounding of the error bound itself.
 const U: f64 = f64::EPSILON;
-/// Largest absolute error of a multiplication whose result is subnormal (`2^-1074`).
-const ETA: f64 = 5e-324;
+/// Absolute error charged to every multiplication for a possible underflow. The true bound is
+/// `2^-1075`; the normal number `2^-900` is charged instead so that the error bookkeeping itself
+/// never computes with subnormal numbers (very slow on common hardware). Predicates whose
+/// values are that small go to the exact path, which is where they belong anyway.
+const ETA: f64 = 1.1834109918413096e-271;
 
 /// An `f64` value with a rigorous bound on the distance to the exact value of the expression
 /// that produced it (running error analysis).
 ///
 /// Each `+`/`-` adds `2^-52·|result|` to the bound, each `*` adds
-/// `|a|·eb + |b|·ea + ea·eb + 2^-52·|result| + 2^-1074` (the last term covers underflow).
+/// `|a|·eb + |b|·ea + ea·eb + 2^-52·|result| + 2^-900` (the last term covers underflow).
 /// Overflow produces infinities or NaN, which [`ErrF64::sign`] reports as uncertain.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ErrF64 {
@@ -92,9 +95,9 @@ impl Mul for ErrF64 {
     #[inline(always)]
     fn mul(self, rhs: ErrF64) -> ErrF64 {
         let value = self.value * rhs.value;
+        // |a|·eb + |b|·ea + ea·eb, arranged so that no product of two error terms occurs.
         let error = self.value.abs() * rhs.error
-            + rhs.value.abs() * self.error
-            + self.error * rhs.error
+            + (rhs.value.abs() + rhs.error) * self.error
             + U * value.abs()
             + ETA;
         ErrF64 { value, error }
@@ -152,11 +155,152 @@ pub fn rational_sign(r: &Rational) -> Ordering {
     }
 }
 
-/// The exact sign of `P` at `x`, computed with exact rationals only.
+/// The exact sign of `P` at `x`, computed exactly (no rounding anywhere).
+///
+/// Every predicate in [`crate::predicates`] is a homogeneous polynomial, so its sign does not
+/// change when all inputs are multiplied by the same power of two: the inputs are first scaled
+/// (exactly) to integers and the same generic code is evaluated on big integers
+/// ([`BigInteger`]). This is exact rational arithmetic with the common denominator factored
+/// out; it avoids the gcd normalisations of `BigRational`, which are quadratic in the size of
+/// the numbers. (The tests check it against [`Rational`] evaluation from
+/// `ga_core::scalar::rational_from_f64`.)
 pub fn exact_sign<P: Poly<N>, const N: usize>(x: &[f64; N]) -> Ordering {
-    let q: [Rational; N] =
-        core::array::from_fn(|i| rational_from_f64(x[i]).unwrap_or_else(<Rational as Ring>::zero));
+    P::eval(&integer_scaled(x))
+        .0
+        .sign()
+        .cmp(&num_bigint::Sign::NoSign)
+}
+
+/// The exact sign of `P` at `x` by [`Rational`] evaluation of the unscaled inputs (slow;
+/// reference for the tests).
+pub fn rational_exact_sign<P: Poly<N>, const N: usize>(x: &[f64; N]) -> Ordering {
+    let q: [Rational; N] = core::array::from_fn(|i| {
+        ga_core::scalar::rational_from_f64(x[i]).unwrap_or_else(<Rational as Ring>::zero)
+    });
     rational_sign(&P::eval(&q))
+}
+
+/// An exact integer implementing [`Ring`] (a newtype over `num_bigint::BigInt`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BigInteger(pub num_bigint::BigInt);
+
+impl Add for BigInteger {
+    type Output = BigInteger;
+    fn add(self, rhs: BigInteger) -> BigInteger {
+        BigInteger(self.0 + rhs.0)
+    }
+}
+impl Sub for BigInteger {
+    type Output = BigInteger;
+    fn sub(self, rhs: BigInteger) -> BigInteger {
+        BigInteger(self.0 - rhs.0)
+    }
+}
+impl Mul for BigInteger {
+    type Output = BigInteger;
+    fn mul(self, rhs: BigInteger) -> BigInteger {
+        BigInteger(self.0 * rhs.0)
+    }
+}
+impl Neg for BigInteger {
+    type Output = BigInteger;
+    fn neg(self) -> BigInteger {
+        BigInteger(-self.0)
+    }
+}
+impl Ring for BigInteger {
+    fn zero() -> Self {
+        BigInteger(num_bigint::BigInt::from(0))
+    }
+    fn one() -> Self {
+        BigInteger(num_bigint::BigInt::from(1))
+    }
+    fn from_i64(n: i64) -> Self {
+        BigInteger(num_bigint::BigInt::from(n))
+    }
+    fn is_zero(&self) -> bool {
+        self.0.sign() == num_bigint::Sign::NoSign
+    }
+}
+
+/// The inputs times a common power of two that makes them all integers.
+pub fn integer_scaled<const N: usize>(x: &[f64; N]) -> [BigInteger; N] {
+    use num_bigint::BigInt;
+    let parts: [(u64, i16, i8); N] = core::array::from_fn(|i| decode(x[i]));
+    let min_exp = parts
+        .iter()
+        .filter(|p| p.0 != 0)
+        .map(|p| p.1)
+        .min()
+        .unwrap_or(0);
+    core::array::from_fn(|i| {
+        let (m, e, sign) = parts[i];
+        if m == 0 || !x[i].is_finite() {
+            return <BigInteger as Ring>::zero();
+        }
+        let v = BigInt::from(m) << ((e - min_exp) as usize);
+        BigInteger(if sign < 0 { -v } else { v })
+    })
+}
+
+/// `x · 2^k`, computed in steps that cannot overflow an intermediate factor.
+fn ldexp(mut x: f64, mut k: i32) -> f64 {
+    const UP: f64 = 1.0715086071862673e301; // 2^1000
+    const DOWN: f64 = 9.332636185032189e-302; // 2^-1000
+    while k > 1000 {
+        x *= UP;
+        k -= 1000;
+    }
+    while k < -1000 {
+        x *= DOWN;
+        k += 1000;
+    }
+    x * f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// The inputs scaled by a common power of two so that the largest is about 1, if that is
+/// exact (no input underflows); `None` otherwise.
+fn rescaled<const N: usize>(x: &[f64; N]) -> Option<[f64; N]> {
+    let max = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if max == 0.0 || !max.is_finite() {
+        return None;
+    }
+    let k = -(decode(max).1 as i32 + 52);
+    if k == 0 {
+        return None;
+    }
+    let y: [f64; N] = core::array::from_fn(|i| ldexp(x[i], k));
+    if (0..N).all(|i| ldexp(y[i], -k) == x[i]) {
+        Some(y)
+    } else {
+        None
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn slow_sign<P: Poly<N>, const N: usize>(x: &[f64; N]) -> Ordering {
+    // Homogeneous predicates: retry the filter at unit scale before going exact.
+    if let Some(y) = rescaled(x) {
+        let e: [ErrF64; N] = core::array::from_fn(|i| ErrF64::exact(y[i]));
+        if let Some(s) = P::eval(&e).sign() {
+            return s;
+        }
+    }
+    exact_sign::<P, N>(x)
+}
+
+/// `x = sign · mantissa · 2^exponent` with an integer mantissa.
+fn decode(x: f64) -> (u64, i16, i8) {
+    let bits = x.to_bits();
+    let sign: i8 = if bits >> 63 == 0 { 1 } else { -1 };
+    let exponent = ((bits >> 52) & 0x7ff) as i16;
+    let mantissa = if exponent == 0 {
+        (bits & 0xf_ffff_ffff_ffff) << 1
+    } else {
+        (bits & 0xf_ffff_ffff_ffff) | 0x10_0000_0000_0000
+    };
+    (mantissa, exponent - (1023 + 52), sign)
 }
 
 /// The side of a point with respect to the (oriented) plane of a triangle, with the plane's
@@ -164,6 +308,10 @@ pub fn exact_sign<P: Poly<N>, const N: usize>(x: &[f64; N]) -> Ordering {
 pub trait PlaneSide {
     /// The sign of `orient3d(p0, p1, p2, q)` for the triangle `p0 p1 p2` this plane was made of.
     fn side(&self, q: &[f64; 3]) -> Ordering;
+    /// The sides of the three vertices of `other`'s triangle.
+    fn sides(&self, other: &Self) -> [Ordering; 3];
+    /// The sides of three points.
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3];
     /// Whether the three vertices are collinear (the plane is undefined).
     fn is_degenerate(&self) -> bool;
 }
@@ -176,10 +324,15 @@ pub trait Kernel {
     fn sign<P: Poly<N>, const N: usize>(x: &[f64; N]) -> Ordering;
     /// The plane of the triangle `p`.
     fn plane(p: &[[f64; 3]; 3]) -> Self::Plane;
+    /// `orient3d(a, b, c, d)`, the sign of `(b - a) × (c - a) · (d - a)`.
+    #[inline]
+    fn orient3d(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3], d: &[f64; 3]) -> Ordering {
+        Self::plane(&[*a, *b, *c]).side(d)
+    }
 }
 
-/// Exact signs: certified `f64` first (a static filter for plane sides, [`ErrF64`] for the
-/// other predicates), exact rationals when uncertain.
+/// Exact signs: certified `f64` first (a semi-static filter for plane sides and `orient3d`,
+/// [`ErrF64`] for the other predicates), exact rationals when uncertain.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ExactKernel;
 
@@ -194,10 +347,10 @@ impl Kernel for ExactKernel {
         let e: [ErrF64; N] = core::array::from_fn(|i| ErrF64::exact(x[i]));
         match P::eval(&e).sign() {
             Some(s) => s,
-            None => exact_sign::<P, N>(x),
+            None => slow_sign::<P, N>(x),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn plane(p: &[[f64; 3]; 3]) -> ExactPlane {
         ExactPlane::new(p)
     }
@@ -214,7 +367,7 @@ impl Kernel for FloatKernel {
         let u = sub(&p[1], &p[0]);
         let v = sub(&p[2], &p[0]);
         FloatPlane {
-            a: p[0],
+            p: *p,
             n: cross(&u, &v),
         }
     }
@@ -234,29 +387,43 @@ fn cross(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {
     ]
 }
 
+#[inline(always)]
+fn sign_of(x: f64) -> Ordering {
+    x.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+}
+
 /// A triangle's plane in plain `f64` ([`FloatKernel`]).
 #[derive(Debug, Clone, Copy)]
 pub struct FloatPlane {
-    a: [f64; 3],
+    p: [[f64; 3]; 3],
     n: [f64; 3],
 }
 
 impl PlaneSide for FloatPlane {
     #[inline]
     fn side(&self, q: &[f64; 3]) -> Ordering {
-        let w = sub(q, &self.a);
-        let d = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
-        d.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+        let w = sub(q, &self.p[0]);
+        sign_of(w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2])
+    }
+    #[inline]
+    fn sides(&self, other: &Self) -> [Ordering; 3] {
+        self.sides_of(&other.p)
+    }
+    #[inline]
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
+        [self.side(&q[0]), self.side(&q[1]), self.side(&q[2])]
     }
     fn is_degenerate(&self) -> bool {
         self.n == [0.0; 3]
     }
 }
 
-/// Inputs of the static filter must be zero or have a magnitude in `[2^-300, 2^300]`: then no
-/// product of three of them (nor any intermediate) overflows or underflows, and the classical
-/// relative error analysis holds.
-const RANGE_LO: f64 = 4.909093465297727e-91; // 2^-300
+/// Coordinates accepted by the static filter are zero or have a magnitude in
+/// `[2^-250, 2^300]`. Then every nonzero difference of coordinates lies in `[2^-302, 2^301]`
+/// (coordinates are multiples of `2^-302`), every nonzero product or minor that occurs is at
+/// least `2^-958` and at most `2^906`: no overflow, no underflow, and the classical relative
+/// error analysis holds.
+const RANGE_LO: f64 = 5.527147875260445e-76; // 2^-250
 const RANGE_HI: f64 = 2.037035976334486e90; // 2^300
 /// Error bound factor of `w·(u×v)` from rounded differences: `(1+ε)^8 - 1 < 8.0000001ε`,
 /// rounded up together with the rounding of the permanent (ε = 2^-53).
@@ -267,17 +434,23 @@ const MINOR_BOUND: f64 = 5.0e-16;
 #[inline(always)]
 fn in_range(x: f64) -> bool {
     let a = x.abs();
-    a <= RANGE_HI && (a >= RANGE_LO || a == 0.0)
+    (a <= RANGE_HI) & ((a >= RANGE_LO) | (a == 0.0))
+}
+
+#[inline(always)]
+fn point_in_range(p: &[f64; 3]) -> bool {
+    in_range(p[0]) & in_range(p[1]) & in_range(p[2])
 }
 
 /// A triangle's plane for [`ExactKernel`]: the normal `n = (p1 - p0) × (p2 - p0)` and its
 /// permanents, computed once. [`PlaneSide::side`] is a semi-static filter on `n·(q - p0)`
-/// (Shewchuk-style bound `1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|)`), with range checks that rule
-/// out overflow and underflow, and the exact rational `orient3d` when it cannot decide.
+/// (Shewchuk-style bound `1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|)`), valid when all coordinates
+/// are in a range that rules out overflow and underflow (checked once per triangle), with the
+/// exact rational `orient3d` when it cannot decide.
 ///
 /// In conformal terms this is the plane `P = up(p0) ∧ up(p1) ∧ up(p2) ∧ n_inf` taken in the
-/// frame translated to `p0`, where `P` reduces to `n` (times `e123 ∧ n_0 ∧ n_inf` duals) and
-/// `P ∧ up(q)` to `n·(q - p0)` times the pseudoscalar.
+/// frame translated to `p0`, where `P ∧ up(q)` is `n·(q - p0)` times the pseudoscalar (see
+/// [`crate::predicates::Orient3d`]).
 #[derive(Debug, Clone, Copy)]
 pub struct ExactPlane {
     p: [[f64; 3]; 3],
@@ -288,7 +461,7 @@ pub struct ExactPlane {
 
 impl ExactPlane {
     /// The plane of the triangle `p` with its filter data.
-    #[inline]
+    #[inline(always)]
     pub fn new(p: &[[f64; 3]; 3]) -> Self {
         let u = sub(&p[1], &p[0]);
         let v = sub(&p[2], &p[0]);
@@ -298,21 +471,15 @@ impl ExactPlane {
             (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
             (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
         ];
-        let ok = in_range(u[0])
-            & in_range(u[1])
-            & in_range(u[2])
-            & in_range(v[0])
-            & in_range(v[1])
-            & in_range(v[2]);
+        let ok = point_in_range(&p[0]) & point_in_range(&p[1]) & point_in_range(&p[2]);
         ExactPlane { p: *p, n, m, ok }
     }
-}
 
-impl PlaneSide for ExactPlane {
-    #[inline]
-    fn side(&self, q: &[f64; 3]) -> Ordering {
-        let w = sub(q, &self.p[0]);
-        if self.ok & in_range(w[0]) & in_range(w[1]) & in_range(w[2]) {
+    /// The filtered side of `q`, trusting that `q`'s coordinates are in range when `q_ok`.
+    #[inline(always)]
+    fn side_with(&self, q: &[f64; 3], q_ok: bool) -> Ordering {
+        if self.ok & q_ok {
+            let w = sub(q, &self.p[0]);
             let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
             let perm = w[0].abs() * self.m[0] + w[1].abs() * self.m[1] + w[2].abs() * self.m[2];
             let bound = ORIENT_BOUND * perm;
@@ -327,29 +494,69 @@ impl PlaneSide for ExactPlane {
                 return Ordering::Equal;
             }
         }
+        self.exact_side(q)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn exact_side(&self, q: &[f64; 3]) -> Ordering {
         let [a, b, c] = self.p;
-        exact_sign::<crate::predicates::Orient3d, 12>(&[
+        ExactKernel::sign::<crate::predicates::Orient3d, 12>(&[
             a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], q[0], q[1], q[2],
         ])
     }
+}
 
+impl PlaneSide for ExactPlane {
+    #[inline]
+    fn side(&self, q: &[f64; 3]) -> Ordering {
+        self.side_with(q, point_in_range(q))
+    }
+
+    #[inline(always)]
+    fn sides(&self, other: &Self) -> [Ordering; 3] {
+        [
+            self.side_with(&other.p[0], other.ok),
+            self.side_with(&other.p[1], other.ok),
+            self.side_with(&other.p[2], other.ok),
+        ]
+    }
+
+    #[inline(always)]
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
+        let ok = point_in_range(&q[0]) & point_in_range(&q[1]) & point_in_range(&q[2]);
+        [
+            self.side_with(&q[0], ok),
+            self.side_with(&q[1], ok),
+            self.side_with(&q[2], ok),
+        ]
+    }
+
+    #[inline]
     fn is_degenerate(&self) -> bool {
         if self.ok {
-            let mut all_zero = true;
-            for i in 0..3 {
-                if self.n[i].abs() > MINOR_BOUND * self.m[i] {
-                    return false;
-                }
-                all_zero &= self.m[i] == 0.0;
+            if (self.n[0].abs() > MINOR_BOUND * self.m[0])
+                | (self.n[1].abs() > MINOR_BOUND * self.m[1])
+                | (self.n[2].abs() > MINOR_BOUND * self.m[2])
+            {
+                return false;
             }
-            if all_zero {
+            if self.m == [0.0; 3] {
                 return true;
             }
         }
+        self.exact_degenerate()
+    }
+}
+
+impl ExactPlane {
+    #[cold]
+    #[inline(never)]
+    fn exact_degenerate(&self) -> bool {
         let [a, b, c] = self.p;
         let x = [a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]];
-        exact_sign::<crate::predicates::NormalX, 9>(&x) == Ordering::Equal
-            && exact_sign::<crate::predicates::NormalY, 9>(&x) == Ordering::Equal
-            && exact_sign::<crate::predicates::NormalZ, 9>(&x) == Ordering::Equal
+        ExactKernel::sign::<crate::predicates::NormalX, 9>(&x) == Ordering::Equal
+            && ExactKernel::sign::<crate::predicates::NormalY, 9>(&x) == Ordering::Equal
+            && ExactKernel::sign::<crate::predicates::NormalZ, 9>(&x) == Ordering::Equal
     }
 }

@@ -47,8 +47,7 @@ use nalgebra::Point3;
 
 use crate::filter::{ExactKernel, Kernel, PlaneSide};
 use crate::predicates::{
-    BallBall, EdgeSide, LineDistance, Orient2d, Orient3d, PlaneDistance, PointPower, SegmentDot,
-    SphereSphere,
+    BallBall, EdgeSide, LineDistance, Orient2d, PlaneDistance, PointPower, SegmentDot, SphereSphere,
 };
 use crate::shapes::{Ball, Segment, Sphere, Triangle};
 
@@ -92,9 +91,7 @@ fn tri(t: &Triangle) -> [P3; 3] {
 
 #[inline]
 fn orient3d<K: Kernel>(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
-    K::sign::<Orient3d, 12>(&[
-        a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2],
-    ])
+    K::orient3d(a, b, c, d)
 }
 
 #[inline]
@@ -264,7 +261,7 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         let (e0, e1) = extremes(p);
         return seg_tri::<K>(&e0, &e1, q);
     }
-    let dq = [pl1.side(&q[0]), pl1.side(&q[1]), pl1.side(&q[2])];
+    let dq = pl1.sides_of(q);
     if strictly_one_side(&dq) {
         return false;
     }
@@ -273,7 +270,7 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         let (e0, e1) = extremes(q);
         return seg_tri_plane::<K>(&e0, &e1, p, &pl1);
     }
-    let dp = [pl2.side(&p[0]), pl2.side(&p[1]), pl2.side(&p[2])];
+    let dp = pl2.sides(&pl1);
     if strictly_one_side(&dp) {
         return false;
     }

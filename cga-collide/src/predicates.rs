@@ -11,7 +11,8 @@
 //! that one of them is the origin (exact in the rational evaluation, and it keeps the `f64`
 //! error bounds small: the conformal embedding is not translation invariant in `f64`).
 
-use ga_core::scalar::Ring;
+use ga_core::cga::{self, Vector};
+use ga_core::prelude::*;
 
 use crate::filter::Poly;
 
@@ -45,39 +46,30 @@ fn cross<R: Ring>(u: &V3<R>, v: &V3<R>) -> V3<R> {
     ]
 }
 
-/// A conformal vector `x1 e1 + x2 e2 + x3 e3 + x4 e4 + x5 e5` of Cl(4,1).
-type C5<R> = [R; 5];
-
-/// `2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5`.
+/// `2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` as a generated [`cga::Vector`].
 #[inline(always)]
-fn up2<R: Ring>(x: &V3<R>) -> C5<R> {
+fn up2<R: Ring>(x: &V3<R>) -> Vector<R> {
     let two = R::from_i64(2);
     let q = dot(x, x);
-    [
+    Vector::new(
         two.clone() * x[0].clone(),
         two.clone() * x[1].clone(),
         two * x[2].clone(),
         q.clone() - R::one(),
         q + R::one(),
-    ]
+    )
 }
 
-/// The dual sphere `2·up(c) - r² n_inf` with `n_inf = e4 + e5`.
+/// The dual sphere `2·up(c) - r² n_inf`.
 #[inline(always)]
-fn sphere2<R: Ring>(c: &V3<R>, r: &R) -> C5<R> {
-    let [a, b, cc, d, e] = up2(c);
-    let r2 = r.clone() * r.clone();
-    [a, b, cc, d - r2.clone(), e - r2]
+fn sphere2<R: Ring>(c: &V3<R>, r: &R) -> Vector<R> {
+    up2(c) - cga::n_inf::<R>().scale(&(r.clone() * r.clone()))
 }
 
-/// The inner product of Cl(4,1) on vectors (signature `+ + + + -`).
+/// The inner product of two conformal vectors (the generated scalar product).
 #[inline(always)]
-fn inner<R: Ring>(a: &C5<R>, b: &C5<R>) -> R {
-    a[0].clone() * b[0].clone()
-        + a[1].clone() * b[1].clone()
-        + a[2].clone() * b[2].clone()
-        + a[3].clone() * b[3].clone()
-        - a[4].clone() * b[4].clone()
+fn inner<R: Ring>(a: &Vector<R>, b: &Vector<R>) -> R {
+    a.scalar_product(b)
 }
 
 /// `orient3d(a, b, c, d) = (b - a) × (c - a) · (d - a)`, inputs `[a, b, c, d]` (12 numbers):
@@ -234,5 +226,24 @@ impl Poly<8> for BallBall {
         let s1 = sphere2(&zero, &x[3]);
         let s2 = sphere2(&d, &x[7]);
         inner(&s1, &s2) + R::from_i64(4) * x[3].clone() * x[7].clone()
+    }
+}
+
+/// `orient3d` computed with the generated outer product: the pseudoscalar coefficient of
+/// `2up(0) ∧ 2up(b - a) ∧ 2up(c - a) ∧ 2up(d - a) ∧ n_inf`, which is `-16·orient3d(a, b, c, d)`
+/// (see the tests). Inputs as [`Orient3d`]. Kept as the literal conformal formulation and
+/// benchmarked against the expanded [`Orient3d`], which the kernels use.
+pub struct Orient3dCga;
+impl Poly<12> for Orient3dCga {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let zero = [R::zero(), R::zero(), R::zero()];
+        let o = up2(&zero);
+        let b = up2(&sub(&v3(x, 3), &a));
+        let c = up2(&sub(&v3(x, 6), &a));
+        let d = up2(&sub(&v3(x, 9), &a));
+        let plane = o.wedge(&b).wedge(&c).wedge(&cga::n_inf::<R>());
+        -plane.wedge(&d).e12345
     }
 }

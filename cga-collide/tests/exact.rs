@@ -3,7 +3,9 @@
 
 use cga_collide::adversarial::{adversarial_set, triangle_pairs, Case};
 use cga_collide::euclid;
-use cga_collide::filter::{exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Poly};
+use cga_collide::filter::{
+    exact_sign, rational_exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Poly,
+};
 use cga_collide::nalgebra::Point3;
 use cga_collide::oracle::{self, Shape};
 use cga_collide::predicates::{Orient3d, SphereSphere};
@@ -165,8 +167,10 @@ proptest! {
             prop_assert_eq!(s, exact_sign::<Orient3d, 12>(&v));
         }
         prop_assert_eq!(ExactKernel::sign::<Orient3d, 12>(&v), exact_sign::<Orient3d, 12>(&v));
+        // The integer-scaled exact path agrees with plain rational evaluation.
+        prop_assert_eq!(exact_sign::<Orient3d, 12>(&v), rational_exact_sign::<Orient3d, 12>(&v));
         let w: [f64; 8] = core::array::from_fn(|i| (x[i] as f64).abs() * scale);
-        prop_assert_eq!(ExactKernel::sign::<SphereSphere, 8>(&w), exact_sign::<SphereSphere, 8>(&w));
+        prop_assert_eq!(ExactKernel::sign::<SphereSphere, 8>(&w), rational_exact_sign::<SphereSphere, 8>(&w));
     }
 }
 
