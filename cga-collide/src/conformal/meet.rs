@@ -578,3 +578,265 @@ meet_impl!(Sphere, Sphere, SphereSphere, sphere_sphere, straight);
 pub fn sphere_sphere_filtered(a: &Sphere, b: &Sphere) -> bool {
     ss_kind::<ErrF64>(&a.ipns_in(), &b.ipns_in()).is_some()
 }
+
+#[cfg(test)]
+mod tests {
+    //! How often the certified filter decides alone, and how often plain `f64` signs (no error
+    //! bound, no fall-back) would classify wrongly, on a fixed adversarial set. Run with
+    //! `cargo test -p cga-collide --release --lib conformal::meet -- --nocapture` to see the
+    //! table.
+    use super::*;
+    use crate::conformal::{Line, Plane, Sphere};
+
+    /// A small deterministic generator (64-bit LCG).
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> u64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            self.0 >> 33
+        }
+        fn int(&mut self, lo: i64, hi: i64) -> f64 {
+            (lo + (self.next() % ((hi - lo + 1) as u64)) as i64) as f64
+        }
+        fn point(&mut self) -> Point3<f64> {
+            Point3::new(self.int(-3, 3), self.int(-3, 3), self.int(-3, 3))
+        }
+    }
+
+    #[derive(Default, Debug)]
+    struct Tally {
+        cases: usize,
+        filtered: usize,
+        float_wrong: usize,
+    }
+
+    fn tally<K: PartialEq>(
+        t: &mut Tally,
+        certified: Option<K>,
+        float: Option<K>,
+        exact: Option<K>,
+    ) {
+        t.cases += 1;
+        t.filtered += usize::from(certified.is_some());
+        if let Some(c) = &certified {
+            assert!(
+                Some(c) == exact.as_ref(),
+                "certified filter disagrees with exact"
+            );
+        }
+        t.float_wrong += usize::from(float != exact);
+    }
+
+    fn scale(r: &mut Lcg) -> (f64, bool) {
+        let k = [0, 0, 0, -30, 40, -500, 500][(r.next() % 7) as usize];
+        (2f64.powi(k), r.next() % 4 == 0)
+    }
+
+    fn nudge(p: Point3<f64>, on: bool) -> Point3<f64> {
+        let mut p = p;
+        if on {
+            p.z = if p.z == 0.0 {
+                1e-300
+            } else {
+                p.z * (1.0 + f64::EPSILON)
+            };
+        }
+        p
+    }
+
+    #[test]
+    fn filter_rate_and_float_errors() {
+        let mut r = Lcg(0x5eed);
+        let n = 1000;
+        let mut rows = Vec::new();
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let a = r.point() * s;
+            let d = r.point().coords;
+            let b = match r.next() % 3 {
+                0 => Line::from_point_direction(
+                    nudge(a + d * r.int(-2, 2) * s, nu),
+                    r.point().coords,
+                ),
+                1 => Line::from_point_direction(nudge(r.point() * s, nu), d * r.int(1, 3)),
+                _ => Line::from_point_direction(nudge(r.point() * s, nu), r.point().coords),
+            };
+            let (Ok(la), Ok(lb)) = (Line::from_point_direction(a, d), b) else {
+                continue;
+            };
+            tally(
+                &mut t,
+                ll_kind::<ErrF64>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
+                ll_kind::<f64>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
+                ll_kind::<Rational>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
+            );
+        }
+        rows.push(("line–line", t));
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let (a, b, c) = (r.point() * s, r.point() * s, r.point() * s);
+            let Ok(p) = Plane::from_points(a, b, c) else {
+                continue;
+            };
+            let l = match r.next() % 3 {
+                0 => Line::from_points(nudge(a + (b - a) * r.int(-2, 2), nu), c),
+                1 => Line::from_point_direction(nudge(r.point() * s, nu), (b - a) * r.int(1, 2)),
+                _ => Line::from_point_direction(nudge(r.point() * s, nu), r.point().coords),
+            };
+            let Ok(l) = l else { continue };
+            tally(
+                &mut t,
+                lp_kind::<ErrF64>(&l.blade_in(), &p.ipns_in()),
+                lp_kind::<f64>(&l.blade_in(), &p.ipns_in()),
+                lp_kind::<Rational>(&l.blade_in(), &p.ipns_in()),
+            );
+        }
+        rows.push(("line–plane", t));
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let c = r.point();
+            let rad = r.int(0, 3);
+            let axis = (r.next() % 3) as usize;
+            let mut u = Vector3::zeros();
+            u[axis] = rad;
+            let mut d = r.point().coords;
+            d[axis] = 0.0;
+            let Ok(l) = Line::from_point_direction(nudge((c + u) * s, nu), d) else {
+                continue;
+            };
+            let sp = Sphere::from_centre_radius(c * s, rad * s).unwrap();
+            tally(
+                &mut t,
+                ls_kind::<ErrF64>(&l.blade_in(), &sp.ipns_in()),
+                ls_kind::<f64>(&l.blade_in(), &sp.ipns_in()),
+                ls_kind::<Rational>(&l.blade_in(), &sp.ipns_in()),
+            );
+        }
+        rows.push(("line–sphere", t));
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let (a, b, c) = (r.point() * s, r.point() * s, r.point() * s);
+            let Ok(p) = Plane::from_points(a, b, c) else {
+                continue;
+            };
+            let q = match r.next() % 2 {
+                0 => Plane::from_points(
+                    nudge(a + (b - a) * r.int(-2, 2), nu),
+                    b + (c - a),
+                    c + (b - a),
+                ),
+                _ => Plane::from_points(nudge(r.point() * s, nu), r.point() * s, r.point() * s),
+            };
+            let Ok(q) = q else { continue };
+            tally(
+                &mut t,
+                pp_kind::<ErrF64>(&p.ipns_in(), &q.ipns_in()),
+                pp_kind::<f64>(&p.ipns_in(), &q.ipns_in()),
+                pp_kind::<Rational>(&p.ipns_in(), &q.ipns_in()),
+            );
+        }
+        rows.push(("plane–plane", t));
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let c = r.point();
+            let rad = r.int(0, 3);
+            let axis = (r.next() % 3) as usize;
+            let mut nn = Vector3::zeros();
+            nn[axis] = r.int(1, 3);
+            let off = nn[axis] * (c[axis] + rad * r.int(-1, 1)) * s;
+            let Ok(p) = Plane::from_normal_offset(nn, off) else {
+                continue;
+            };
+            let sp = Sphere::from_centre_radius(nudge(c * s, nu), rad * s).unwrap();
+            tally(
+                &mut t,
+                sp_kind::<ErrF64>(&sp.ipns_in(), &p.ipns_in()),
+                sp_kind::<f64>(&sp.ipns_in(), &p.ipns_in()),
+                sp_kind::<Rational>(&sp.ipns_in(), &p.ipns_in()),
+            );
+        }
+        rows.push(("sphere–plane", t));
+
+        let mut t = Tally::default();
+        for _ in 0..n {
+            let (s, nu) = scale(&mut r);
+            let c1 = r.point();
+            let (r1, r2) = (r.int(0, 4), r.int(0, 4));
+            let axis = (r.next() % 3) as usize;
+            let mut e = Vector3::zeros();
+            e[axis] = match r.next() % 3 {
+                0 => r1 + r2,
+                1 => (r1 - r2).abs(),
+                _ => r.int(0, 6),
+            };
+            let a = Sphere::from_centre_radius(c1 * s, r1 * s).unwrap();
+            let b = Sphere::from_centre_radius(nudge((c1 + e) * s, nu), r2 * s).unwrap();
+            tally(
+                &mut t,
+                ss_kind::<ErrF64>(&a.ipns_in(), &b.ipns_in()),
+                ss_kind::<f64>(&a.ipns_in(), &b.ipns_in()),
+                ss_kind::<Rational>(&a.ipns_in(), &b.ipns_in()),
+            );
+        }
+        rows.push(("sphere–sphere", t));
+
+        println!("| pair | cases | decided by the f64 filter | plain f64 wrong |");
+        println!("|---|---|---|---|");
+        for (name, t) in &rows {
+            println!(
+                "| {name} | {} | {} ({:.1}%) | {} ({:.1}%) |",
+                t.cases,
+                t.filtered,
+                100.0 * t.filtered as f64 / t.cases as f64,
+                t.float_wrong,
+                100.0 * t.float_wrong as f64 / t.cases as f64
+            );
+        }
+        // Plain f64 must be wrong somewhere on this set, or the set is not adversarial.
+        assert!(rows.iter().map(|(_, t)| t.float_wrong).sum::<usize>() > 0);
+    }
+
+    #[test]
+    fn filter_decides_general_position() {
+        // Uniform random f64 coordinates: the certified filter alone should decide (almost)
+        // everything; the exact path is for degenerate and extreme inputs.
+        let mut r = Lcg(42);
+        let mut u = move || (r.next() as f64 / (1u64 << 31) as f64) * 20.0 - 10.0;
+        let mut pt = move || Point3::new(u(), u(), u());
+        let n = 1000;
+        let mut decided = [0usize; 6];
+        for _ in 0..n {
+            let (a, b, c, d, e, f) = (pt(), pt(), pt(), pt(), pt(), pt());
+            let la = Line::from_points(a, b).unwrap();
+            let lb = Line::from_points(c, d).unwrap();
+            let p = Plane::from_points(a, c, e).unwrap();
+            let q = Plane::from_points(b, d, f).unwrap();
+            let s1 = Sphere::from_centre_radius(e, (f.x + 10.0) / 2.0).unwrap();
+            let s2 = Sphere::from_centre_radius(f, (e.y + 10.0) / 2.0).unwrap();
+            let (l1, l2) = (la.blade_in::<ErrF64>(), lb.blade_in::<ErrF64>());
+            let (p1, p2) = (p.ipns_in::<ErrF64>(), q.ipns_in::<ErrF64>());
+            let (t1, t2) = (s1.ipns_in::<ErrF64>(), s2.ipns_in::<ErrF64>());
+            decided[0] += usize::from(ll_kind(&l1, &l2, lb.spanning_vectors()).is_some());
+            decided[1] += usize::from(lp_kind(&l1, &p2).is_some());
+            decided[2] += usize::from(ls_kind(&l1, &t1).is_some());
+            decided[3] += usize::from(pp_kind(&p1, &p2).is_some());
+            decided[4] += usize::from(sp_kind(&t1, &p2).is_some());
+            decided[5] += usize::from(ss_kind(&t1, &t2).is_some());
+        }
+        println!("general position, decided by the f64 filter out of {n}: {decided:?}");
+        assert!(decided.iter().all(|&k| k >= n * 99 / 100), "{decided:?}");
+    }
+}
