@@ -19,6 +19,24 @@ use std::ops::ControlFlow;
 
 use nalgebra::Point3;
 
+#[inline(always)]
+fn mn(a: f64, b: f64) -> f64 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+#[inline(always)]
+fn mx(a: f64, b: f64) -> f64 {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
 /// An axis-aligned box `[min, max]` (closed).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Aabb {
@@ -48,8 +66,8 @@ impl Aabb {
     #[inline]
     pub fn grow(&mut self, p: &Point3<f64>) {
         for k in 0..3 {
-            self.min[k] = self.min[k].min(p[k]);
-            self.max[k] = self.max[k].max(p[k]);
+            self.min[k] = mn(self.min[k], p[k]);
+            self.max[k] = mx(self.max[k], p[k]);
         }
     }
 
@@ -58,14 +76,14 @@ impl Aabb {
     pub fn union(&self, o: &Aabb) -> Aabb {
         Aabb {
             min: [
-                self.min[0].min(o.min[0]),
-                self.min[1].min(o.min[1]),
-                self.min[2].min(o.min[2]),
+                mn(self.min[0], o.min[0]),
+                mn(self.min[1], o.min[1]),
+                mn(self.min[2], o.min[2]),
             ],
             max: [
-                self.max[0].max(o.max[0]),
-                self.max[1].max(o.max[1]),
-                self.max[2].max(o.max[2]),
+                mx(self.max[0], o.max[0]),
+                mx(self.max[1], o.max[1]),
+                mx(self.max[2], o.max[2]),
             ],
         }
     }
@@ -181,14 +199,14 @@ pub fn triangle_box(vertices: &[Point3<f64>], t: &[u32; 3]) -> Aabb {
     );
     Aabb {
         min: [
-            a.x.min(b.x).min(c.x),
-            a.y.min(b.y).min(c.y),
-            a.z.min(b.z).min(c.z),
+            mn(mn(a.x, b.x), c.x),
+            mn(mn(a.y, b.y), c.y),
+            mn(mn(a.z, b.z), c.z),
         ],
         max: [
-            a.x.max(b.x).max(c.x),
-            a.y.max(b.y).max(c.y),
-            a.z.max(b.z).max(c.z),
+            mx(mx(a.x, b.x), c.x),
+            mx(mx(a.y, b.y), c.y),
+            mx(mx(a.z, b.z), c.z),
         ],
     }
 }

@@ -23,7 +23,7 @@
 
 use std::ops::ControlFlow;
 
-use nalgebra::Isometry3;
+use nalgebra::{Isometry3, Point3};
 use rayon::prelude::*;
 
 use crate::bvh::{triangle_box, Aabb, BuildStrategy, Bvh};
@@ -40,11 +40,108 @@ pub enum Mode {
     Bvh,
 }
 
-/// A mesh in world coordinates together with its hierarchy.
+/// A mesh in world coordinates together with its hierarchy, and the boxes of its triangles
+/// in `f32` rounded outwards (what the brute-force scans read: 24 bytes a triangle, contiguous).
 #[derive(Debug, Clone)]
 pub struct Collider {
     mesh: TriMesh,
     bvh: Bvh,
+    boxes32: Vec<[f32; 6]>,
+}
+
+/// The next `f32` above `f` (`f` itself for `+∞` and NaN).
+fn next_up(f: f32) -> f32 {
+    if f.is_nan() || f == f32::INFINITY {
+        f
+    } else if f == 0.0 {
+        f32::from_bits(1)
+    } else if f > 0.0 {
+        f32::from_bits(f.to_bits() + 1)
+    } else {
+        f32::from_bits(f.to_bits() - 1)
+    }
+}
+
+/// An `f32` not above `x`.
+fn down(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) > x {
+        -next_up(-f)
+    } else {
+        f
+    }
+}
+
+/// An `f32` not below `x`.
+fn up(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) < x {
+        next_up(f)
+    } else {
+        f
+    }
+}
+
+fn boxes32(mesh: &TriMesh) -> Vec<[f32; 6]> {
+    mesh.triangles()
+        .iter()
+        .map(|t| {
+            let b = triangle_box(mesh.vertices(), t);
+            [
+                down(b.min[0]),
+                down(b.min[1]),
+                down(b.min[2]),
+                up(b.max[0]),
+                up(b.max[1]),
+                up(b.max[2]),
+            ]
+        })
+        .collect()
+}
+
+/// An `f32` box containing `b`, one `f32` step wider on every side (so it also contains the box
+/// of anything `b` approximates to within `f64` rounding, e.g. `centre ± radius`).
+fn query_box32(b: &Aabb) -> [f32; 6] {
+    let lo = |x: f64| -next_up(-down(x));
+    let hi = |x: f64| next_up(up(x));
+    [
+        lo(b.min[0]),
+        lo(b.min[1]),
+        lo(b.min[2]),
+        hi(b.max[0]),
+        hi(b.max[1]),
+        hi(b.max[2]),
+    ]
+}
+
+/// Triangles per work item of the brute-force scans.
+const CHUNK: usize = 1 << 14;
+
+#[inline(always)]
+fn overlap32(a: &[f32; 6], b: &[f32; 6]) -> bool {
+    // Non-short-circuit `&`: branch-free, so the scan vectorises.
+    (a[0] <= b[3])
+        & (b[0] <= a[3])
+        & (a[1] <= b[4])
+        & (b[1] <= a[4])
+        & (a[2] <= b[5])
+        & (b[2] <= a[5])
+}
+
+fn ball_box(c: &Point3<f64>, r: f64) -> Aabb {
+    Aabb {
+        min: [c.x - r, c.y - r, c.z - r],
+        max: [c.x + r, c.y + r, c.z + r],
+    }
+}
+
+/// The `f64` box of an outward-rounded `f32` box (contains the exact triangle box).
+#[inline]
+fn widen(b: &[f32; 6]) -> Aabb {
+    Aabb {
+        min: [f64::from(b[0]), f64::from(b[1]), f64::from(b[2])],
+        max: [f64::from(b[3]), f64::from(b[4]), f64::from(b[5])],
+    }
 }
 
 impl Collider {
@@ -56,7 +153,8 @@ impl Collider {
     /// Builds the hierarchy with a chosen split strategy.
     pub fn with_strategy(mesh: TriMesh, strategy: BuildStrategy) -> Collider {
         let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
-        Collider { mesh, bvh }
+        let boxes32 = boxes32(&mesh);
+        Collider { mesh, bvh, boxes32 }
     }
 
     /// This collider moved by `iso`: the vertices are transformed once, in `f64` (the exact
@@ -66,7 +164,8 @@ impl Collider {
         let mesh = self.mesh.transformed(iso)?;
         let mut bvh = self.bvh.clone();
         bvh.refit(mesh.vertices(), mesh.triangles());
-        Ok(Collider { mesh, bvh })
+        let boxes32 = boxes32(&mesh);
+        Ok(Collider { mesh, bvh, boxes32 })
     }
 
     /// The mesh, in world coordinates.
@@ -93,18 +192,37 @@ impl Collider {
 
     /// Sorted indices of the triangles for which `hit` holds, among those whose box passes
     /// `test` (brute: all triangles, in parallel; bvh: candidates of the hierarchy).
+    /// `query` is a box holding the query shape up to `f64` rounding (used, widened to `f32`,
+    /// as the first filter of the brute-force scan).
     fn hits(
         &self,
         mode: Mode,
+        query: &Aabb,
         test: impl Fn(&Aabb) -> bool + Sync,
         hit: impl Fn(&Triangle) -> bool + Sync,
     ) -> Vec<u32> {
         match mode {
-            Mode::Brute => (0..self.mesh.num_triangles())
-                .into_par_iter()
-                .filter(|&i| test(&self.tri_box(i)) && hit(&self.triangle(i as u32)))
-                .map(|i| i as u32)
-                .collect(),
+            Mode::Brute => {
+                let q = query_box32(query);
+                let chunks: Vec<Vec<u32>> = self
+                    .boxes32
+                    .par_chunks(CHUNK)
+                    .enumerate()
+                    .map(|(c, boxes)| {
+                        let mut out = Vec::new();
+                        for (k, b) in boxes.iter().enumerate() {
+                            if overlap32(b, &q) {
+                                let i = (c * CHUNK + k) as u32;
+                                if test(&widen(b)) && hit(&self.triangle(i)) {
+                                    out.push(i);
+                                }
+                            }
+                        }
+                        out
+                    })
+                    .collect();
+                chunks.concat()
+            }
             Mode::Bvh => {
                 let mut out = Vec::new();
                 let _ = self.bvh.for_each_candidate::<()>(&test, |t| {
@@ -122,41 +240,64 @@ impl Collider {
     /// Sorted indices of the triangles the closed segment meets.
     pub fn segment_hits(&self, s: &Segment, mode: Mode) -> Vec<u32> {
         let (p, q) = (*s.a(), *s.b());
-        self.hits(mode, |b| b.may_meet_segment(&p, &q), |t| t.intersects(s))
+        let query = Aabb::of_points(&[p, q]);
+        self.hits(
+            mode,
+            &query,
+            |b| b.may_meet_segment(&p, &q),
+            |t| t.intersects(s),
+        )
     }
 
     /// Sorted indices of the triangles the closed triangle meets.
     pub fn triangle_hits(&self, t: &Triangle, mode: Mode) -> Vec<u32> {
         let tb = Aabb::of_points(t.vertices());
-        self.hits(mode, |b| b.overlaps(&tb), |u| u.intersects(t))
+        self.hits(mode, &tb, |b| b.overlaps(&tb), |u| u.intersects(t))
     }
 
     /// Sorted indices of the triangles the sphere *surface* meets.
     pub fn sphere_hits(&self, s: &Sphere, mode: Mode) -> Vec<u32> {
         let (c, r) = (*s.centre(), s.radius());
-        self.hits(mode, |b| b.may_meet_sphere(&c, r), |t| t.intersects(s))
+        self.hits(
+            mode,
+            &ball_box(&c, r),
+            |b| b.may_meet_sphere(&c, r),
+            |t| t.intersects(s),
+        )
     }
 
     /// Sorted indices of the triangles the solid ball meets.
     pub fn ball_hits(&self, s: &Ball, mode: Mode) -> Vec<u32> {
         let (c, r) = (*s.centre(), s.radius());
-        self.hits(mode, |b| b.may_meet_ball(&c, r), |t| t.intersects(s))
+        self.hits(
+            mode,
+            &ball_box(&c, r),
+            |b| b.may_meet_ball(&c, r),
+            |t| t.intersects(s),
+        )
     }
 
     /// Sorted indices of the triangles met by at least one of the sphere surfaces.
     pub fn spheres_hits(&self, spheres: &[Sphere], mode: Mode) -> Vec<u32> {
         let mut out: Vec<u32> = match mode {
-            Mode::Brute => (0..self.mesh.num_triangles())
-                .into_par_iter()
-                .filter(|&i| {
-                    let b = self.tri_box(i);
-                    let t = self.triangle(i as u32);
-                    spheres
-                        .iter()
-                        .any(|s| b.may_meet_sphere(s.centre(), s.radius()) && t.intersects(s))
-                })
-                .map(|i| i as u32)
-                .collect(),
+            Mode::Brute => {
+                let qs: Vec<[f32; 6]> = spheres
+                    .iter()
+                    .map(|s| query_box32(&ball_box(s.centre(), s.radius())))
+                    .collect();
+                (0..self.mesh.num_triangles())
+                    .into_par_iter()
+                    .filter(|&i| {
+                        let b32 = &self.boxes32[i];
+                        spheres.iter().zip(&qs).any(|(s, q)| {
+                            overlap32(b32, q)
+                                && widen(b32).may_meet_sphere(s.centre(), s.radius())
+                                && self.triangle(i as u32).intersects(s)
+                        })
+                    })
+                    .map(|i| i as u32)
+                    .collect()
+            }
             Mode::Bvh => spheres
                 .par_iter()
                 .flat_map_iter(|s| self.sphere_hits(s, Mode::Bvh))
@@ -259,5 +400,37 @@ impl Collider {
         });
         out.sort_unstable();
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn f32_boxes_round_outwards(m in -1.0f64..1.0, e in -330i32..330) {
+            let x = m * 10f64.powi(e);
+            prop_assert!(f64::from(down(x)) <= x);
+            prop_assert!(f64::from(up(x)) >= x);
+        }
+    }
+
+    #[test]
+    fn f32_rounding_edge_cases() {
+        for x in [
+            0.0,
+            -0.0,
+            1e-300,
+            -1e-300,
+            1e300,
+            -1e300,
+            0.1,
+            -0.1,
+            f64::from(f32::MAX),
+        ] {
+            assert!(f64::from(down(x)) <= x && f64::from(up(x)) >= x, "{x}");
+        }
     }
 }
