@@ -25,6 +25,10 @@ use std::ops::ControlFlow;
 
 use nalgebra::{Isometry3, Point3};
 use rayon::prelude::*;
+use std::cmp::Ordering;
+
+use crate::filter::{ExactKernel, Kernel};
+use crate::predicates::{Orient2d, Orient3d};
 
 use crate::bvh::{triangle_box, Aabb, BuildStrategy, Bvh};
 use crate::mesh::{MeshError, TriMesh};
@@ -400,6 +404,119 @@ impl Collider {
         });
         out.sort_unstable();
         out
+    }
+}
+
+/// `orient2d(a, b, p')` in the `(y, z)` projection for the perturbed point
+/// `p' = p + (0, ε, ε²)`, `ε → 0⁺` (never zero unless `a` and `b` project to one point).
+fn orient2d_perturbed(a: &Point3<f64>, b: &Point3<f64>, p: &Point3<f64>) -> Ordering {
+    let s = ExactKernel::sign::<Orient2d, 6>(&[a.y, a.z, b.y, b.z, p.y, p.z]);
+    if s != Ordering::Equal {
+        return s;
+    }
+    // d/dε = -(b_z - a_z), d/dε² = b_y - a_y
+    match a.z.partial_cmp(&b.z) {
+        Some(Ordering::Equal) | None => b.y.partial_cmp(&a.y).unwrap_or(Ordering::Equal),
+        Some(o) => o,
+    }
+}
+
+/// Whether the ray from `p` along `+x`, perturbed as in [`orient2d_perturbed`], crosses the
+/// triangle `[a, b, c]` (which does not contain `p`).
+fn ray_crosses(t: &[Point3<f64>; 3], p: &Point3<f64>) -> bool {
+    let [a, b, c] = t;
+    let area = ExactKernel::sign::<Orient2d, 6>(&[a.y, a.z, b.y, b.z, c.y, c.z]);
+    if area == Ordering::Equal {
+        return false; // zero-area projection: the perturbed ray misses it
+    }
+    if orient2d_perturbed(a, b, p) != area
+        || orient2d_perturbed(b, c, p) != area
+        || orient2d_perturbed(c, a, p) != area
+    {
+        return false;
+    }
+    // In front of p: sign(x* - p_x) = -sign(orient3d(a, b, c, p)) · sign(n_x), n_x = area.
+    let o3 = ExactKernel::sign::<Orient3d, 12>(&[
+        a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, p.x, p.y, p.z,
+    ]);
+    o3 != Ordering::Equal && o3 != area
+}
+
+impl Collider {
+    /// Whether `p` lies in the closed solid bounded by this mesh: on a triangle, or inside by
+    /// the parity of the crossings of a ray from `p` along `+x`. Exact: the ray is perturbed
+    /// symbolically (simulation of simplicity in the `(y, z)` projection), so rays through
+    /// edges and vertices are counted consistently, and every sign is an exact predicate.
+    ///
+    /// The answer is the solid's for a closed mesh (every edge used by an even number of
+    /// triangles, see [`TriMesh::is_closed`]); for other meshes it is the even–odd rule of
+    /// that one ray.
+    pub fn contains_point(&self, p: &Point3<f64>, mode: Mode) -> bool {
+        let Ok(point) = Segment::new(*p, *p) else {
+            return false;
+        };
+        let on_ray = |b: &Aabb| {
+            b.min[1] <= p.y
+                && p.y <= b.max[1]
+                && b.min[2] <= p.z
+                && p.z <= b.max[2]
+                && b.max[0] >= p.x
+        };
+        // (on the surface, crossings)
+        let visit = |i: u32| -> (bool, bool) {
+            let tri = self.mesh.triangle(i as usize);
+            let t = self.triangle(i);
+            if t.intersects(&point) {
+                (true, false)
+            } else {
+                (false, ray_crosses(&tri, p))
+            }
+        };
+        match mode {
+            Mode::Brute => {
+                let (on, crossings) = (0..self.mesh.num_triangles())
+                    .into_par_iter()
+                    .filter(|&i| on_ray(&widen(&self.boxes32[i])))
+                    .map(|i| {
+                        let (on, c) = visit(i as u32);
+                        (on, usize::from(c))
+                    })
+                    .reduce(|| (false, 0), |x, y| (x.0 || y.0, x.1 + y.1));
+                on || crossings % 2 == 1
+            }
+            Mode::Bvh => {
+                let mut crossings = 0usize;
+                let on = self
+                    .bvh
+                    .for_each_candidate(on_ray, |i| {
+                        let (on, c) = visit(i);
+                        if on {
+                            return ControlFlow::Break(());
+                        }
+                        crossings += usize::from(c);
+                        ControlFlow::Continue(())
+                    })
+                    .is_break();
+                on || crossings % 2 == 1
+            }
+        }
+    }
+
+    /// Whether the closed solids bounded by the two closed meshes share a point: their surfaces
+    /// intersect, or one lies wholly inside the other (which [`collides`](Self::collides),
+    /// a surface test, does not report). Exact.
+    pub fn collides_solid(&self, other: &Collider, mode: Mode) -> bool {
+        self.collides(other, mode)
+            || self
+                .mesh
+                .vertices()
+                .first()
+                .is_some_and(|v| other.contains_point(v, mode))
+            || other
+                .mesh
+                .vertices()
+                .first()
+                .is_some_and(|v| self.contains_point(v, mode))
     }
 }
 

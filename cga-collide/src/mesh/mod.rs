@@ -273,6 +273,22 @@ impl TriMesh {
         }
     }
 
+    /// Whether every undirected edge is used by an even number of triangles (edges of
+    /// degenerate triangles included): the condition under which the mesh bounds a solid
+    /// for the even–odd rule (`Collider::contains_point`).
+    pub fn is_closed(&self) -> bool {
+        let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(self.triangles.len() * 3);
+        for t in &self.triangles {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                if a != b {
+                    *edges.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+                }
+            }
+        }
+        edges.values().all(|n| n % 2 == 0)
+    }
+
     /// The mesh subdivided ([`subdivided`](Self::subdivided)) until it has at least
     /// `min_triangles` triangles (×4 per step).
     pub fn subdivided_to(&self, min_triangles: usize) -> TriMesh {

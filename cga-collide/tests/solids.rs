@@ -1,0 +1,144 @@
+//! Exact point-in-closed-mesh and solid collision.
+
+use cga_collide::mesh::TriMesh;
+use cga_collide::query::{Collider, Mode};
+use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
+use proptest::prelude::*;
+
+fn cube(lo: [f64; 3], hi: [f64; 3]) -> TriMesh {
+    let mut v = Vec::new();
+    for &z in &[lo[2], hi[2]] {
+        for &y in &[lo[1], hi[1]] {
+            for &x in &[lo[0], hi[0]] {
+                v.push(Point3::new(x, y, z));
+            }
+        }
+    }
+    let quads = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let mut t = Vec::new();
+    for q in quads {
+        t.push([q[0], q[1], q[2]]);
+        t.push([q[0], q[2], q[3]]);
+    }
+    TriMesh::new(v, t).unwrap()
+}
+
+/// Float generalized winding number (solid angles), for points far from the surface.
+fn winding(m: &TriMesh, p: &Point3<f64>) -> f64 {
+    let mut w = 0.0;
+    for k in 0..m.num_triangles() {
+        let [a, b, c] = m.triangle(k).map(|q| q - p);
+        let (la, lb, lc) = (a.norm(), b.norm(), c.norm());
+        let num = a.dot(&b.cross(&c));
+        let den = la * lb * lc + a.dot(&b) * lc + b.dot(&c) * la + c.dot(&a) * lb;
+        w += 2.0 * num.atan2(den);
+    }
+    w / (4.0 * std::f64::consts::PI)
+}
+
+#[test]
+fn fixtures_are_closed_or_not() {
+    assert!(cube([0.0; 3], [1.0; 3]).is_closed());
+    assert!(cube([0.0; 3], [1.0; 3]).subdivided().is_closed());
+    let mut open = cube([0.0; 3], [1.0; 3]).triangles().to_vec();
+    open.pop();
+    let open = TriMesh::new(cube([0.0; 3], [1.0; 3]).vertices().to_vec(), open).unwrap();
+    assert!(!open.is_closed());
+}
+
+#[test]
+fn armadillo_inside_matches_winding_number_away_from_surface() {
+    let arm = TriMesh::armadillo();
+    assert!(arm.is_closed());
+    let c = Collider::new(arm.clone());
+    let (lo, hi) = arm.bounds();
+    let mut rng = cga_collide::adversarial::SplitMix64(7);
+    let mut inside = 0;
+    for _ in 0..40 {
+        let p = Point3::new(
+            rng.float(lo.x, hi.x),
+            rng.float(lo.y, hi.y),
+            rng.float(lo.z, hi.z),
+        );
+        let w = winding(&arm, &p);
+        if (w - w.round()).abs() > 0.05 {
+            continue; // too close to the surface for the float reference
+        }
+        let exact = c.contains_point(&p, Mode::Bvh);
+        assert_eq!(exact, w.round() as i64 % 2 != 0, "{p:?} winding {w}");
+        assert_eq!(exact, c.contains_point(&p, Mode::Brute));
+        inside += usize::from(exact);
+    }
+    assert!(inside > 0);
+}
+
+#[test]
+fn nested_solids_collide_without_surface_contact() {
+    let big = Collider::new(cube([0.0; 3], [10.0; 3]));
+    let small = Collider::new(cube([0.0; 3], [1.0; 3]).subdivided())
+        .placed(&Isometry3::from_parts(
+            Translation3::new(4.0, 4.0, 4.0),
+            UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1),
+        ))
+        .unwrap();
+    for mode in [Mode::Brute, Mode::Bvh] {
+        assert!(!big.collides(&small, mode));
+        assert!(big.collides_solid(&small, mode));
+        assert!(small.collides_solid(&big, mode));
+    }
+    let away = small
+        .placed(&Isometry3::translation(20.0, 0.0, 0.0))
+        .unwrap();
+    assert!(!big.collides_solid(&away, Mode::Bvh));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Points on the half-integer grid around an integer box: rays through vertices and along
+    /// edges and faces everywhere. Inside the closed box iff contained.
+    #[test]
+    fn cube_containment_is_exact(
+        lo in prop::array::uniform3(-2i32..1), size in prop::array::uniform3(1i32..4),
+        pts in prop::collection::vec(prop::array::uniform3(-6i32..10), 20), subdivide in any::<bool>(),
+    ) {
+        let lo_f = lo.map(f64::from);
+        let hi_f = [0, 1, 2].map(|k| f64::from(lo[k] + size[k]));
+        let mut mesh = cube(lo_f, hi_f);
+        if subdivide {
+            mesh = mesh.subdivided();
+        }
+        let c = Collider::new(mesh);
+        for q in pts {
+            let p = Point3::new(q[0] as f64 * 0.5, q[1] as f64 * 0.5, q[2] as f64 * 0.5);
+            let expected = (0..3).all(|k| lo_f[k] <= p[k] && p[k] <= hi_f[k]);
+            prop_assert_eq!(c.contains_point(&p, Mode::Bvh), expected, "{:?}", p);
+            prop_assert_eq!(c.contains_point(&p, Mode::Brute), expected, "{:?}", p);
+        }
+    }
+
+    /// Rotated boxes: modes agree, and points well inside or outside are classified right.
+    #[test]
+    fn rotated_cube_modes_agree(a in -3.2f64..3.2, b in -3.2f64..3.2, x in -2.0f64..2.0,
+                                y in -2.0f64..2.0, z in -2.0f64..2.0) {
+        let iso = Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_euler_angles(a, b, 0.0));
+        let c = Collider::new(cube([-1.0; 3], [1.0; 3])).placed(&iso).unwrap();
+        let p = Point3::new(x, y, z);
+        let local = iso.inverse() * p;
+        let r = local.coords.amax();
+        let got = c.contains_point(&p, Mode::Bvh);
+        prop_assert_eq!(got, c.contains_point(&p, Mode::Brute));
+        if r < 0.999 { prop_assert!(got); }
+        if r > 1.001 { prop_assert!(!got); }
+        // vertices of the placed mesh are on it
+        let v = c.mesh().vertices()[0];
+        prop_assert!(c.contains_point(&v, Mode::Bvh));
+    }
+}
