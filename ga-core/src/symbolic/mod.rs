@@ -464,6 +464,51 @@ impl Poly {
         Poly { terms: out }
     }
 
+    /// The integer coefficients as `i64`, if every coefficient is an integer that fits.
+    fn small_integer_coefficients(&self) -> Option<Vec<i64>> {
+        self.terms
+            .iter()
+            .map(|(_, c)| {
+                if c.is_integer() {
+                    c.numer().to_i64()
+                } else {
+                    None
+                }
+            })
+            .collect()
+    }
+
+    /// Fast path of the product when every coefficient is a small integer: `i128`
+    /// accumulation, `None` (use the exact general path) if anything could overflow.
+    fn mul_small_integers(&self, other: &Poly) -> Option<Poly> {
+        let a = self.small_integer_coefficients()?;
+        let b = other.small_integer_coefficients()?;
+        let max_a = a.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0) as u128;
+        let max_b = b.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0) as u128;
+        // |sum| ≤ n_a · n_b · max_a · max_b must stay below 2^126.
+        let bound = max_a
+            .checked_mul(max_b)?
+            .checked_mul(a.len() as u128)?
+            .checked_mul(b.len() as u128)?;
+        if bound >= 1u128 << 126 {
+            return None;
+        }
+        let mut acc: HashMap<Monomial, i128> =
+            HashMap::with_capacity(self.terms.len() * other.terms.len() / 2 + 1);
+        for ((m1, _), c1) in self.terms.iter().zip(&a) {
+            for ((m2, _), c2) in other.terms.iter().zip(&b) {
+                *acc.entry(m1.mul(m2)).or_insert(0) += i128::from(*c1) * i128::from(*c2);
+            }
+        }
+        let mut terms: Vec<(Monomial, Rational)> = acc
+            .into_iter()
+            .filter(|(_, c)| *c != 0)
+            .map(|(m, c)| (m, Rational::from_integer(BigInt::from(c))))
+            .collect();
+        terms.sort_unstable_by(|x, y| x.0.cmp(&y.0));
+        Some(Poly { terms })
+    }
+
     fn mul_ref(&self, other: &Poly) -> Poly {
         if self.terms.is_empty() || other.terms.is_empty() {
             return Poly::default();
@@ -482,6 +527,9 @@ impl Poly {
                 .collect();
             terms.sort_unstable_by(|a, b| a.0.cmp(&b.0));
             return Poly { terms };
+        }
+        if let Some(p) = self.mul_small_integers(other) {
+            return p;
         }
         let mut acc: HashMap<Monomial, Rational> =
             HashMap::with_capacity(self.terms.len() * other.terms.len() / 2 + 1);
@@ -764,6 +812,22 @@ mod tests {
         let s = &x + &y;
         assert_eq!(&s * &x, &(&x * &x) + &(&y * &x));
         assert_eq!(&x * &s, &(&x * &y) + &(&x * &x));
+    }
+
+    #[test]
+    fn large_coefficients_take_the_exact_path() {
+        let big = Poly::parse("4611686018427387904 x + 4611686018427387903 y - 1/3").unwrap();
+        let sq = &big * &big;
+        let at = [
+            ("x", Rational::from_integer(3.into())),
+            ("y", Rational::new((-5).into(), 7.into())),
+        ];
+        let v = big.eval_rational(&at).unwrap();
+        assert_eq!(sq.eval_rational(&at).unwrap(), &v * &v);
+        let ints = Poly::parse("4611686018427387904 x + 4611686018427387903 y").unwrap();
+        let sq = &ints * &ints;
+        let v = ints.eval_rational(&at).unwrap();
+        assert_eq!(sq.eval_rational(&at).unwrap(), &v * &v);
     }
 
     #[test]
