@@ -881,3 +881,111 @@ proptest! {
         prop_assert_eq!(kind_ss(&sphere_sphere(&s1.build(), &s2.build())), oracle_ss(&s1, &s2));
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The geometry carried by the variants agrees with Euclidean formulas (f64, relative tolerance).
+
+fn on_line(x: &Point3<f64>, l: &Line, tol: f64) -> bool {
+    let p = l.support_point();
+    let d = l.direction();
+    (x - p).cross(&d).norm() <= tol
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn meet_geometry_is_right(a in point(), b in point(), c in point(), d in point(), r1 in 0.5f64..8.0, r2 in 0.5f64..8.0,
+                              n in unit_vector(), off in coord(), t in -2.0f64..2.0) {
+        let tol = 1e-7;
+        prop_assume!((b - a).norm() > 0.1);
+        let la = Line::from_points(a, b).unwrap();
+        let pl = Plane::from_normal_offset(n, off).unwrap();
+        // Line–line through a common point.
+        let x0 = a + (b - a) * t;
+        prop_assume!((d - x0).norm() > 0.1 && (d - x0).normalize().cross(&la.direction()).norm() > 0.05);
+        let lb = Line::from_points(d, x0).unwrap();
+        match line_line(&la, &lb) {
+            LineLine::Point(x) => prop_assert!(close(&x, &x0, tol), "{x} {x0}"),
+            // x0 is rounded, so the two lines are usually skew by a hair: exactly classified.
+            LineLine::Skew { distance } => prop_assert!(distance < tol),
+            other => prop_assert!(false, "{:?}", other),
+        }
+        // Line–plane.
+        if let LinePlane::Point(x) = line_plane(&la, &pl) {
+            prop_assert!((n.dot(&x.coords) - off).abs() <= tol * (1.0 + x.coords.norm()));
+            prop_assert!(on_line(&x, &la, tol * (1.0 + x.coords.norm())));
+        }
+        // Line–sphere.
+        let s1 = Sphere::from_centre_radius(c, r1).unwrap();
+        if let LineSphere::TwoPoints(p, q) = line_sphere(&la, &s1) {
+            for x in [p, q] {
+                prop_assert!(((x - c).norm() - r1).abs() <= tol);
+                prop_assert!(on_line(&x, &la, tol));
+            }
+            prop_assert!((q - p).dot(&la.direction()) >= 0.0);
+        }
+        // Plane–plane.
+        if let Ok(pm) = Plane::from_points(a, c, d) {
+            if let PlanePlane::Line(l) = plane_plane(&pl, &pm) {
+                let s = l.support_point();
+                prop_assert!(pl.normal().dot(&s.coords) - pl.offset() <= tol * (1.0 + s.coords.norm()));
+                prop_assert!((pm.normal().dot(&s.coords) - pm.offset()).abs() <= tol * (1.0 + s.coords.norm()));
+                prop_assert!(l.direction().dot(&pl.normal()).abs() <= tol);
+                prop_assert!(l.direction().dot(&pm.normal()).abs() <= tol);
+            }
+        }
+        // Sphere–plane: centre is the projection, r² = R² − h².
+        if let SpherePlane::Circle(k) = sphere_plane(&s1, &pl) {
+            let h = n.dot(&c.coords) - off;
+            prop_assert!(close(&k.centre(), &(c - n * h), tol));
+            prop_assert!((k.radius_squared() - (r1 * r1 - h * h)).abs() <= tol * r1 * r1);
+            prop_assert!((k.normal().dot(&n).abs() - 1.0).abs() <= tol);
+        }
+        // Sphere–sphere: the radical plane.
+        let s2 = Sphere::from_centre_radius(d, r2).unwrap();
+        if let SphereSphere::Circle(k) = sphere_sphere(&s1, &s2) {
+            let w = d - c;
+            let dist = w.norm();
+            let x = (dist * dist + r1 * r1 - r2 * r2) / (2.0 * dist);
+            prop_assert!(close(&k.centre(), &(c + w * (x / dist)), tol * (1.0 + dist)));
+            prop_assert!((k.radius_squared() - (r1 * r1 - x * x)).abs() <= tol * (1.0 + r1 * r1));
+        }
+    }
+
+    /// Tangent points of exact tangencies lie on both objects.
+    #[test]
+    fn tangent_points_are_right(c in ipoint(), r in 1i32..4, r2 in 1i32..4, axis in 0usize..3, e in ivec(), internal in any::<bool>()) {
+        let r = f64::from(r);
+        let r2 = f64::from(r2);
+        let mut u = Vector3::zeros();
+        u[axis] = 1.0;
+        let s = Sphere::from_centre_radius(c, r).unwrap();
+        let touch = c + u * r;
+        // Line tangent at `touch`.
+        let mut dir = e;
+        dir[axis] = 0.0;
+        if dir != Vector3::zeros() {
+            let l = Line::from_point_direction(touch, dir).unwrap();
+            match line_sphere(&l, &s) {
+                LineSphere::Tangent(x) => prop_assert!(close(&x, &touch, 1e-9), "{x} {touch}"),
+                other => prop_assert!(false, "{:?}", other),
+            }
+        }
+        // Plane tangent at `touch`.
+        let p = Plane::from_normal_offset(u * 2.0, 2.0 * touch[axis]).unwrap();
+        match sphere_plane(&s, &p) {
+            SpherePlane::Tangent(x) => prop_assert!(close(&x, &touch, 1e-9), "{x} {touch}"),
+            other => prop_assert!(false, "{:?}", other),
+        }
+        // Sphere tangent at `touch`, from outside or inside.
+        prop_assume!(!(internal && r == r2));
+        let c2 = if internal { c + u * (r - r2) } else { c + u * (r + r2) };
+        let s2 = Sphere::from_centre_radius(c2, r2).unwrap();
+        match (sphere_sphere(&s, &s2), internal) {
+            (SphereSphere::TangentExternal(x), false) => prop_assert!(close(&x, &touch, 1e-9), "{x} {touch}"),
+            (SphereSphere::TangentInternal(x), true) => prop_assert!(close(&x, &touch, 1e-9), "{x} {touch}"),
+            other => prop_assert!(false, "{:?}", other),
+        }
+    }
+}
