@@ -450,7 +450,11 @@ pub fn check_rule(
             }
         }
         "rule_line_sphere" | "rule_sphere_plane" | "rule_sphere_sphere" => {
-            sphere_rule(fx, kind, scope, &formula_of, &mut g, method, detail)
+            sphere_rule(fx, kind, scope, &formula_of, &mut g, method, detail).then_prove(
+                !ctx.corrected,
+                kind,
+                detail,
+            )
         }
         _ => {
             *detail = format!("no rule check for `{kind}`");
@@ -653,5 +657,107 @@ fn prove(scope: &Scope, formula: &str, target: &Poly, what: &str, detail: &mut S
         None => {
             let _ = writeln!(detail, "\nB² is not a constant multiple of {what}.");
         }
+    }
+}
+
+/// Appends the symbolic proof of a sphere rule (once: in the printed pass).
+trait ThenProve {
+    fn then_prove(self, prove: bool, kind: &str, detail: &mut String) -> Self;
+}
+impl ThenProve for Verdict {
+    fn then_prove(self, prove: bool, kind: &str, detail: &mut String) -> Self {
+        if prove {
+            let _ = writeln!(detail, "{}", prove_sphere_rule(kind));
+        }
+        self
+    }
+}
+
+/// The dual (inner) sphere with centre `m` and radius² `r2`: m + ½(m² − r²) n_inf + n_0.
+fn dual_sphere(m: &str, r2: &str) -> SymMultivector {
+    let c = [1, 2, 3].map(|i| coord(m, i));
+    let c2 = norm2(&c);
+    let half = Poly::ratio(1, 2).unwrap_or_default();
+    let w = &(&c2 - &Poly::var(r2)) * &half;
+    // n_inf = e4 + e5, n_0 = (e5 − e4)/2.
+    SymMultivector::blade(1, c[0].clone())
+        .add(&SymMultivector::blade(2, c[1].clone()))
+        .add(&SymMultivector::blade(4, c[2].clone()))
+        .add(&SymMultivector::blade(8, &w - &half))
+        .add(&SymMultivector::blade(16, &w + &half))
+}
+
+/// The dual plane {x : v·x = δ}: v + δ n_inf.
+fn dual_plane(v: &str, delta: &str) -> SymMultivector {
+    let d = Poly::var(delta);
+    SymMultivector::blade(1, coord(v, 1))
+        .add(&SymMultivector::blade(2, coord(v, 2)))
+        .add(&SymMultivector::blade(4, coord(v, 3)))
+        .add(&SymMultivector::blade(8, d.clone()))
+        .add(&SymMultivector::blade(16, d))
+}
+
+/// Symbolic proof of a sphere rule for the computed B: the outer forms are nonzero multiples of
+/// (dual form)·I, so ⟨B B⟩₀ equals a positive multiple of the value computed from dual forms with
+/// symbolic centre, radius, normal and offset; that value is compared with the Euclidean
+/// discriminant.
+fn prove_sphere_rule(kind: &str) -> String {
+    let i = SymMultivector::blade(31, Poly::from(1));
+    let (a_dual, c_outer, disc, what) = match kind {
+        "rule_line_sphere" => {
+            // Line through a and b (outer form from the points), sphere (m, r²).
+            let pa = point2([1, 2, 3].map(|k| coord("a", k)));
+            let pb = point2([1, 2, 3].map(|k| coord("b", k)));
+            let l = wedge_all(&[pa, pb, n_inf()]);
+            let d = diff_p("b", "a");
+            let am = diff_p("a", "m");
+            let disc = &(&Poly::var("r2") * &norm2(&d)) - &norm2(&cross_p(&am, &d));
+            (
+                dual_sphere("m", "r2"),
+                l,
+                disc,
+                "r²|d|² − |(a − m) × d|² (|d|² times r² − distance² from the centre m to the line through a with direction d = b − a)",
+            )
+        }
+        "rule_sphere_plane" => {
+            let pl = gp(&dual_plane("v", "delta"), &i);
+            let v = [1, 2, 3].map(|k| coord("v", k));
+            let m = [1, 2, 3].map(|k| coord("m", k));
+            let off = &dot_p(&v, &m) - &Poly::var("delta");
+            let disc = &(&Poly::var("r2") * &norm2(&v)) - &(&off * &off);
+            (
+                dual_sphere("m", "r2"),
+                pl,
+                disc,
+                "r²|v|² − (v·m − δ)² (|v|² times r² − distance² from the centre m to the plane v·x = δ)",
+            )
+        }
+        _ => {
+            let e2 = gp(&dual_sphere("o", "s2"), &i);
+            let dd = norm2(&diff_p("m", "o"));
+            let (r2, s2) = (Poly::var("r2"), Poly::var("s2"));
+            // 4 r² s² − (r² + s² − D²)² = ((r+s)² − D²)(D² − (r−s)²).
+            let t = &(&r2 + &s2) - &dd;
+            let disc = &(&(&r2 * &s2) * &Poly::from(4)) - &(&t * &t);
+            (
+                dual_sphere("m", "r2"),
+                e2,
+                disc,
+                "4r²s² − (r² + s² − D²)² = ((r + s)² − D²)(D² − (r − s)²) for radii r, s and centre distance D",
+            )
+        }
+    };
+    // B = (I E) ⌋ C with E = a_dual · I: I E = I a I = −a (I is central, I² = −1).
+    let b = lc(&a_dual.neg(), &c_outer);
+    let bb = gp(&b, &b).get(0);
+    match bb.ratio_to(&disc) {
+        Some(k) => format!(
+            "Proved symbolically (computed B, outer forms replaced by dual forms with symbolic centre, \
+             radius, normal, offset; the outer forms are nonzero multiples of them, so only a positive \
+             factor changes): ⟨B B⟩₀ = {} · [{what}], so its sign is the Euclidean discriminant's: \
+             > 0 meet, = 0 tangent, < 0 apart.",
+            super::rat_str(&k)
+        ),
+        None => format!("⟨B B⟩₀ from dual forms is not a constant multiple of {what}."),
     }
 }
