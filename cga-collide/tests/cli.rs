@@ -1,0 +1,131 @@
+//! The `cga` command line: JSON fields, pairs file, image, modes agreeing, typed errors.
+
+use std::process::Command;
+
+fn cga(args: &[&str], dir: &std::path::Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_cga"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the cga binary runs")
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("cga-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON on stdout")
+}
+
+#[test]
+fn collide_modes_agree_and_write_pairs_and_image() {
+    let dir = temp_dir("collide");
+    let common = [
+        "collide",
+        "bunny",
+        "bunny",
+        "--unit",
+        "--rotate",
+        "0,40,10",
+        "--translate",
+        "0.2,0.05,-0.1",
+        "--json",
+        "--repeat",
+        "1",
+    ];
+    let mut brute_args = common.to_vec();
+    brute_args.extend(["--mode", "brute", "--pairs", "brute.txt"]);
+    let mut bvh_args = common.to_vec();
+    bvh_args.extend(["--mode", "bvh", "--pairs", "bvh.txt", "--image", "out.png"]);
+    let brute = json(&cga(&brute_args, &dir));
+    let bvh = json(&cga(&bvh_args, &dir));
+    assert_eq!(brute["mode"], "brute");
+    assert_eq!(bvh["mode"], "bvh");
+    assert_eq!(brute["pairs"], bvh["pairs"]);
+    assert_eq!(bvh["triangles"], serde_json::json!([3674, 3674]));
+    assert!(bvh["collides"].as_bool().unwrap());
+    assert!(bvh["pairs"].as_u64().unwrap() > 0);
+    assert!(bvh["millis"].as_f64().unwrap() >= 0.0);
+    assert!(bvh["build_millis"].as_f64().unwrap() >= 0.0);
+    let a = std::fs::read_to_string(dir.join("brute.txt")).unwrap();
+    let b = std::fs::read_to_string(dir.join("bvh.txt")).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(a.lines().count() as u64, bvh["pairs"].as_u64().unwrap());
+    for line in a.lines() {
+        let ij: Vec<u32> = line.split(' ').map(|x| x.parse().unwrap()).collect();
+        assert!(ij.len() == 2 && ij[0] < 3674 && ij[1] < 3674);
+    }
+    let png = std::fs::read(dir.join("out.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+}
+
+#[test]
+fn far_apart_meshes_do_not_collide() {
+    let dir = temp_dir("apart");
+    let out = json(&cga(
+        &[
+            "collide",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "5,0,0",
+            "--json",
+            "--repeat",
+            "1",
+        ],
+        &dir,
+    ));
+    assert_eq!(out["collides"], false);
+    assert_eq!(out["pairs"], 0);
+}
+
+#[test]
+fn query_reports_hits() {
+    let dir = temp_dir("query");
+    let out = json(&cga(
+        &[
+            "query",
+            "bunny",
+            "--unit",
+            "--segment",
+            "0,0,-2,0,0,2",
+            "--json",
+        ],
+        &dir,
+    ));
+    assert_eq!(out["query"], "segment");
+    // A segment through the middle of a closed mesh crosses its surface an even, nonzero number
+    // of times (or touches an edge/vertex, which counts every triangle there).
+    assert!(out["hits"].as_u64().unwrap() >= 2);
+}
+
+#[test]
+fn bad_input_gives_an_error_not_a_panic() {
+    let dir = temp_dir("bad");
+    std::fs::write(
+        dir.join("broken.off"),
+        "OFF\n3 1 0\n0 0 0\n1 nope 0\n0 1 0\n3 0 1 2\n",
+    )
+    .unwrap();
+    let out = cga(&["collide", "broken.off", "bunny"], &dir);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("broken.off"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    let out = cga(&["collide", "missing.obj", "bunny"], &dir);
+    assert!(!out.status.success());
+    let out = cga(&["query", "bunny", "--sphere", "0,0,0,-1"], &dir);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("radius"));
+    let out = cga(&["collide", "bunny", "bunny", "--translate", "1,2"], &dir);
+    assert!(!out.status.success());
+}
