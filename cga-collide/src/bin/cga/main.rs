@@ -245,7 +245,7 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         collides = ca.collides(&cb, mode);
         best_first = best_first.min(t.elapsed());
     }
-    if collides != !pairs.is_empty() {
+    if collides == pairs.is_empty() {
         bail!("internal inconsistency: first-hit and all-pairs disagree (please report)");
     }
     if let Some(path) = &args.pairs {
