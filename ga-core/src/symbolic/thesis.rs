@@ -785,6 +785,20 @@ mod tests {
     }
 
     #[test]
+    fn latex_in_thesis_notation() {
+        let s = Scope::new();
+        let m = s.parse("(alpha1 - 1/2) e1e2e - beta4 e3e1ē").unwrap();
+        assert_eq!(
+            m.to_latex(Notation::Thesis),
+            "\\left(\\alpha_{1} - \\frac{1}{2}\\right) e_{1}e_{2}e - \\beta_{4} e_{3}e_{1}\\bar{e}"
+        );
+        assert_eq!(
+            m.to_notation(Notation::Thesis),
+            "(alpha1 - 1/2) e1e2e - beta4 e3e1ē"
+        );
+    }
+
+    #[test]
     fn defs_expand() {
         let mut s = Scope::new();
         s.point("x1", ["a1", "a2", "a3"])
