@@ -333,7 +333,11 @@ fn format_from_extension() {
 
 /// Valid seed files of every format, from a small random mesh.
 fn seeds(m: &TriMesh) -> Vec<(Vec<u8>, MeshFormat)> {
+    use std::io::Write;
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    gz.write_all(off_text(m).as_bytes()).unwrap();
     vec![
+        (gz.finish().unwrap(), MeshFormat::Off),
         (off_text(m).into_bytes(), MeshFormat::Off),
         (obj_text(m).into_bytes(), MeshFormat::Obj),
         (ply_ascii(m), MeshFormat::Ply),
@@ -430,7 +434,7 @@ proptest! {
     /// Random meshes round-trip through every format.
     #[test]
     fn formats_round_trip(m in small_mesh()) {
-        for (bytes, format) in seeds(&m).into_iter().take(5) {
+        for (bytes, format) in seeds(&m).into_iter().take(6) {
             let got = TriMesh::from_bytes(&bytes, format, "rt").unwrap();
             if format == MeshFormat::Obj {
                 prop_assert!(same_geometry(&got, &m));
