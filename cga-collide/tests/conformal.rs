@@ -989,3 +989,25 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// The ball side test equals the exact comparison of |x − c|² with r².
+    #[test]
+    fn sphere_side_matches_oracle(c in ipoint(), r in 0i32..4, x in ipoint(), w in warp(), by_points in any::<bool>()) {
+        let rr = f64::from(r);
+        let s = if by_points && r > 0 {
+            let cs = w.p(c);
+            let k = w.x(rr);
+            Sphere::from_points([cs + v3(k, 0., 0.), cs - v3(k, 0., 0.), cs + v3(0., k, 0.), cs - v3(0., 0., k)]).unwrap()
+        } else {
+            Sphere::from_centre_radius(w.p(c), w.x(rr)).unwrap()
+        };
+        let xs = w.last(x);
+        let d = sub(&qp(&xs), &qp(&w.p(c)));
+        let r2 = q(w.x(rr)) * q(w.x(rr));
+        let expected = r2.cmp(&dot(&d, &d));
+        prop_assert_eq!(s.side(&xs), expected);
+    }
+}

@@ -908,6 +908,38 @@ impl Sphere {
             Ordering::Equal,
         )
     }
+    /// Where `x` is with respect to the solid ball bounded by the sphere, decided exactly:
+    /// `Greater` inside, `Equal` on the sphere, `Less` outside. It is the sign of
+    /// `(F(x)·s)(−s·n_inf) = 2(r² − |x − c|²)·w` for the IPNS vector `s` of weight `w`, so the
+    /// conformal sphere doubles as a ball. A non-finite `x` is `Less` (outside).
+    ///
+    /// ```
+    /// use cga_collide::conformal::Sphere;
+    /// use cga_collide::nalgebra::Point3;
+    /// use core::cmp::Ordering;
+    /// let s = Sphere::from_points([Point3::new(1.0, 0.0, 0.0), Point3::new(-1.0, 0.0, 0.0),
+    ///                              Point3::new(0.0, 1.0, 0.0), Point3::new(0.0, 0.0, 1.0)])?;
+    /// assert_eq!(s.side(&Point3::new(0.5, 0.5, 0.5)), Ordering::Greater);
+    /// assert_eq!(s.side(&Point3::new(0.0, -1.0, 0.0)), Ordering::Equal);
+    /// assert_eq!(s.side(&Point3::new(0.0, 0.0, 1.0 + f64::EPSILON)), Ordering::Less);
+    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// ```
+    pub fn side(&self, x: &Point3<f64>) -> Ordering {
+        if !x.iter().all(|c| c.is_finite()) {
+            return Ordering::Less;
+        }
+        fn side_in<T: Exactish>(s: &Vector<T>, x: &Point3<f64>) -> Option<Ordering> {
+            let v = embed::<T>(x).scalar_product(s);
+            let w = -s.scalar_product(&n_inf::<T>());
+            let (a, b) = (v.sign_of()?, w.sign_of()?);
+            Some(if b == Ordering::Less { a.reverse() } else { a })
+        }
+        decide(
+            || side_in(&self.ipns_in::<ErrF64>(), x),
+            || side_in(&self.ipns_in::<Rational>(), x),
+            Ordering::Less,
+        )
+    }
     /// Whether `x` lies on the sphere, `F(x) · dual(S) = 0`, decided exactly.
     pub fn contains(&self, x: &Point3<f64>) -> bool {
         if !x.iter().all(|c| c.is_finite()) {
