@@ -9,6 +9,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use ga_core::cga::{Bivector, Multivector, Odd, Quadvector, Rotor, Trivector, Vector};
 use ga_core::prelude::*;
+use ga_core::reference::{DenseMultivector, Signature};
 use std::hint::black_box;
 
 const BATCH: usize = 1024;
@@ -280,6 +281,17 @@ fn dense(c: &mut Criterion) {
         .iter()
         .map(|(a, b)| ((*a).into(), (*b).into()))
         .collect();
+    let signature = Signature::new(&[1, 1, 1, 1, -1]).expect("Cl(4,1)");
+    let reference_pairs: Vec<(DenseMultivector<f64>, DenseMultivector<f64>)> = dense_pairs
+        .iter()
+        .map(|(a, b)| {
+            let make = |m: &Multivector<f64>| {
+                DenseMultivector::from_canonical(&signature, m.coefficients().to_vec())
+                    .expect("32 coefficients")
+            };
+            (make(a), make(b))
+        })
+        .collect();
     let mut group = c.benchmark_group("vector*vector dense contrast");
     group.throughput(Throughput::Elements(BATCH as u64));
     group.bench_function("generated sparse", |bench| {
@@ -293,6 +305,13 @@ fn dense(c: &mut Criterion) {
         bench.iter(|| {
             for (a, b) in black_box(&dense_pairs) {
                 black_box(gen_dense_geometric(a, b));
+            }
+        })
+    });
+    group.bench_function("dense reference (run-time bitmask)", |bench| {
+        bench.iter(|| {
+            for (a, b) in black_box(&reference_pairs) {
+                black_box(a.geometric(b));
             }
         })
     });
