@@ -11,7 +11,7 @@ use cga_collide::IntersectsWith;
 
 /// The seed and size of the fixed set.
 const SEED: u64 = 2026;
-const PER_KIND: usize = 100;
+const PER_KIND: usize = 1000;
 
 fn run<K: Kernel>(c: &Case) -> bool {
     match c {

@@ -1,13 +1,21 @@
 //! Certified signs of polynomials: an `f64` evaluation with a rigorous error bound, and the
-//! exact rational evaluation of the *same* generic code when the bound cannot decide.
+//! exact evaluation of the *same* generic code when the bound cannot decide.
 //!
 //! A predicate is a polynomial written once, as straight-line code generic over
-//! [`ga_core::scalar::Ring`] (a [`Poly`]). [`ExactKernel`] evaluates it first on [`ErrF64`]
-//! (an `f64` value carrying a running bound on its rounding error, underflow and overflow
-//! included) and, only if the sign is not certain, on [`Rational`] (exact `BigRational` made
-//! from the `f64` inputs without rounding). [`FloatKernel`] evaluates it on plain `f64` and
-//! believes the result: it is the "no exact fall-back" variant used to measure what rounding
-//! costs.
+//! [`ga_core::scalar::Ring`] (a [`Poly`]). [`ExactKernel`] evaluates it
+//! 1. on [`ErrF64`] (an `f64` value carrying a running bound on its rounding error, underflow
+//!    and overflow included); for the plane sides of the triangle tests a cheaper semi-static
+//!    filter ([`ExactPlane`]) is used instead;
+//! 2. if uncertain, on [`ErrF64`] again after scaling all inputs by a common power of two to
+//!    unit size (exact; the predicates are homogeneous), which rescues coordinates around
+//!    `1e±150` whose products would underflow or overflow;
+//! 3. if still uncertain, exactly: the inputs are scaled to integers and the same code runs on
+//!    [`BigInteger`] (exact rational arithmetic with the common denominator factored out; the
+//!    tests cross-check it against `ga_core::scalar::Rational` evaluation,
+//!    [`rational_exact_sign`]).
+//!
+//! [`FloatKernel`] evaluates the same code on plain `f64` and believes the result: it is the
+//! "no exact fall-back" variant used to measure what rounding costs.
 
 use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
@@ -418,35 +426,23 @@ impl PlaneSide for FloatPlane {
     }
 }
 
-/// Coordinates accepted by the static filter are zero or have a magnitude in
-/// `[2^-250, 2^300]`. Then every nonzero difference of coordinates lies in `[2^-302, 2^301]`
-/// (coordinates are multiples of `2^-302`), every nonzero product or minor that occurs is at
-/// least `2^-958` and at most `2^906`: no overflow, no underflow, and the classical relative
-/// error analysis holds.
-const RANGE_LO: f64 = 5.527147875260445e-76; // 2^-250
-const RANGE_HI: f64 = 2.037035976334486e90; // 2^300
 /// Error bound factor of `w·(u×v)` from rounded differences: `(1+ε)^8 - 1 < 8.0000001ε`,
 /// rounded up together with the rounding of the permanent (ε = 2^-53).
 const ORIENT_BOUND: f64 = 1.0e-15;
 /// Error bound factor of a 2x2 minor `u_y v_z - u_z v_y` of rounded differences (`≈ 4ε`).
 const MINOR_BOUND: f64 = 5.0e-16;
-
-#[inline(always)]
-fn in_range(x: f64) -> bool {
-    let a = x.abs();
-    (a <= RANGE_HI) & ((a >= RANGE_LO) | (a == 0.0))
-}
-
-#[inline(always)]
-fn point_in_range(p: &[f64; 3]) -> bool {
-    in_range(p[0]) & in_range(p[1]) & in_range(p[2])
-}
+/// Absolute error allowance for underflow: every product that underflows errs by at most
+/// `2^-1075`; through the filter's formula the total is below `2^-1072 (1 + Σ|w_i|)`. The
+/// normal number `2^-1000` is used as the factor (an over-estimate that keeps subnormals out).
+const UNDERFLOW: f64 = 9.332636185032189e-302; // 2^-1000
+/// Permanents above this (or NaN) mean an overflow may have happened: no certificate.
+const PERM_MAX: f64 = 8.98846567431158e307; // 2^1023
 
 /// A triangle's plane for [`ExactKernel`]: the normal `n = (p1 - p0) × (p2 - p0)` and its
-/// permanents, computed once. [`PlaneSide::side`] is a semi-static filter on `n·(q - p0)`
-/// (Shewchuk-style bound `1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|)`), valid when all coordinates
-/// are in a range that rules out overflow and underflow (checked once per triangle), with the
-/// exact rational `orient3d` when it cannot decide.
+/// permanents, computed once. [`PlaneSide::side`] is a semi-static filter on `n·(q - p0)`:
+/// the sign is certain when `|det| > 1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|) + 2^-1000 (1 + Σ|w_i|)`
+/// (Shewchuk-style relative bound plus an absolute allowance for underflow) and the permanent
+/// is finite (no overflow); otherwise the exact `orient3d` decides.
 ///
 /// In conformal terms this is the plane `P = up(p0) ∧ up(p1) ∧ up(p2) ∧ n_inf` taken in the
 /// frame translated to `p0`, where `P ∧ up(q)` is `n·(q - p0)` times the pseudoscalar (see
@@ -456,7 +452,6 @@ pub struct ExactPlane {
     p: [[f64; 3]; 3],
     n: [f64; 3],
     m: [f64; 3],
-    ok: bool,
 }
 
 impl ExactPlane {
@@ -471,27 +466,22 @@ impl ExactPlane {
             (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
             (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
         ];
-        let ok = point_in_range(&p[0]) & point_in_range(&p[1]) & point_in_range(&p[2]);
-        ExactPlane { p: *p, n, m, ok }
+        ExactPlane { p: *p, n, m }
     }
 
-    /// The filtered side of `q`, trusting that `q`'s coordinates are in range when `q_ok`.
     #[inline(always)]
-    fn side_with(&self, q: &[f64; 3], q_ok: bool) -> Ordering {
-        if self.ok & q_ok {
-            let w = sub(q, &self.p[0]);
-            let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
-            let perm = w[0].abs() * self.m[0] + w[1].abs() * self.m[1] + w[2].abs() * self.m[2];
-            let bound = ORIENT_BOUND * perm;
+    fn side_with(&self, q: &[f64; 3]) -> Ordering {
+        let w = sub(q, &self.p[0]);
+        let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
+        let aw = [w[0].abs(), w[1].abs(), w[2].abs()];
+        let perm = aw[0] * self.m[0] + aw[1] * self.m[1] + aw[2] * self.m[2];
+        let bound = ORIENT_BOUND * perm + UNDERFLOW * (1.0 + (aw[0] + aw[1] + aw[2]));
+        if perm <= PERM_MAX {
             if det > bound {
                 return Ordering::Greater;
             }
             if det < -bound {
                 return Ordering::Less;
-            }
-            if perm == 0.0 {
-                // Every term is exactly zero (no underflow is possible in range).
-                return Ordering::Equal;
             }
         }
         self.exact_side(q)
@@ -510,40 +500,27 @@ impl ExactPlane {
 impl PlaneSide for ExactPlane {
     #[inline]
     fn side(&self, q: &[f64; 3]) -> Ordering {
-        self.side_with(q, point_in_range(q))
+        self.side_with(q)
     }
 
     #[inline(always)]
     fn sides(&self, other: &Self) -> [Ordering; 3] {
-        [
-            self.side_with(&other.p[0], other.ok),
-            self.side_with(&other.p[1], other.ok),
-            self.side_with(&other.p[2], other.ok),
-        ]
+        self.sides_of(&other.p)
     }
 
     #[inline(always)]
     fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
-        let ok = point_in_range(&q[0]) & point_in_range(&q[1]) & point_in_range(&q[2]);
-        [
-            self.side_with(&q[0], ok),
-            self.side_with(&q[1], ok),
-            self.side_with(&q[2], ok),
-        ]
+        [self.side_with(&q[0]), self.side_with(&q[1]), self.side_with(&q[2])]
     }
 
     #[inline]
     fn is_degenerate(&self) -> bool {
-        if self.ok {
-            if (self.n[0].abs() > MINOR_BOUND * self.m[0])
-                | (self.n[1].abs() > MINOR_BOUND * self.m[1])
-                | (self.n[2].abs() > MINOR_BOUND * self.m[2])
-            {
-                return false;
-            }
-            if self.m == [0.0; 3] {
-                return true;
-            }
+        // A component of the normal is certainly nonzero (`m` finite: no overflow).
+        if (self.n[0].abs() > MINOR_BOUND * self.m[0] + UNDERFLOW)
+            | (self.n[1].abs() > MINOR_BOUND * self.m[1] + UNDERFLOW)
+            | (self.n[2].abs() > MINOR_BOUND * self.m[2] + UNDERFLOW)
+        {
+            return false;
         }
         self.exact_degenerate()
     }

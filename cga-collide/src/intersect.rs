@@ -257,13 +257,15 @@ fn alone(s: &[Ordering; 3]) -> usize {
 
 fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
     let pl1 = K::plane(p);
+    let dq = pl1.sides_of(q);
+    // (A degenerate first triangle gives exact zeros here, so this exit is sound before the
+    // degeneracy check.)
+    if strictly_one_side(&dq) {
+        return false;
+    }
     if pl1.is_degenerate() {
         let (e0, e1) = extremes(p);
         return seg_tri::<K>(&e0, &e1, q);
-    }
-    let dq = pl1.sides_of(q);
-    if strictly_one_side(&dq) {
-        return false;
     }
     let pl2 = K::plane(q);
     if pl2.is_degenerate() {

@@ -1,13 +1,15 @@
 //! The polynomial predicates, each written once as straight-line code generic over
 //! [`Ring`] so that the same code runs on `f64`, on the error-bounded
-//! [`ErrF64`](crate::filter::ErrF64) and on exact rationals.
+//! [`ErrF64`](crate::filter::ErrF64) and on exact integers / rationals. The conformal vectors
+//! are the generated `ga_core::cga::Vector` with its generated scalar product.
 //!
 //! They are phrased in the conformal model (DESIGN.md): with the thesis's scaling
 //! `X = 2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` (no division, so it stays in a ring) and
 //! the sphere `S = 2·up(c) - r² n_inf`, the inner product gives `X·S = -2(|x - c|² - r²)`,
 //! `S·S = 4r²` and `S1·S2 = 2(r1² + r2² - |c1 - c2|²)`; the plane
-//! `up(a) ∧ up(b) ∧ up(c) ∧ n_inf` wedged with `up(d)` is `orient3d(a, b, c, d)` times the
-//! pseudoscalar (up to a constant factor). Every predicate first translates its inputs so
+//! `up(a) ∧ up(b) ∧ up(c) ∧ up(d) ∧ n_inf` is exactly `orient3d(a, b, c, d)` times the
+//! pseudoscalar `e12345` (checked against the generated algebra in
+//! `tests/predicates_conformal.rs`). Every predicate first translates its inputs so
 //! that one of them is the origin (exact in the rational evaluation, and it keeps the `f64`
 //! error bounds small: the conformal embedding is not translation invariant in `f64`).
 
@@ -73,8 +75,9 @@ fn inner<R: Ring>(a: &Vector<R>, b: &Vector<R>) -> R {
 }
 
 /// `orient3d(a, b, c, d) = (b - a) × (c - a) · (d - a)`, inputs `[a, b, c, d]` (12 numbers):
-/// the pseudoscalar coefficient of the plane `up(a) ∧ up(b) ∧ up(c) ∧ n_inf` wedged with
-/// `up(d)` (up to a constant factor).
+/// the `e12345` coefficient of `up(a) ∧ up(b) ∧ up(c) ∧ up(d) ∧ n_inf`, expanded by hand in the
+/// frame translated to `a` (the literal generated-wedge version is [`Orient3dCga`]; the
+/// benchmark `orient3d` shows it is about 7x slower, so the kernels use this one).
 pub struct Orient3d;
 impl Poly<12> for Orient3d {
     #[inline(always)]
