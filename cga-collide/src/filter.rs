@@ -510,7 +510,11 @@ impl PlaneSide for ExactPlane {
 
     #[inline(always)]
     fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
-        [self.side_with(&q[0]), self.side_with(&q[1]), self.side_with(&q[2])]
+        [
+            self.side_with(&q[0]),
+            self.side_with(&q[1]),
+            self.side_with(&q[2]),
+        ]
     }
 
     #[inline]
