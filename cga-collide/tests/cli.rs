@@ -129,3 +129,58 @@ fn bad_input_gives_an_error_not_a_panic() {
     let out = cga(&["collide", "bunny", "bunny", "--translate", "1,2"], &dir);
     assert!(!out.status.success());
 }
+
+fn cube_off(lo: f64, hi: f64) -> String {
+    let mut s = String::from("OFF\n8 12 0\n");
+    for i in 0..8 {
+        let c = |bit: usize| if i >> bit & 1 == 1 { hi } else { lo };
+        s += &format!("{} {} {}\n", c(0), c(1), c(2));
+    }
+    for f in [
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ] {
+        s += &format!("3 {} {} {}\n", f[0], f[1], f[2]);
+    }
+    s
+}
+
+#[test]
+fn a_mesh_wholly_inside_another_is_reported() {
+    let dir = temp_dir("nested");
+    std::fs::write(dir.join("big.off"), cube_off(-2.0, 2.0)).unwrap();
+    std::fs::write(dir.join("small.off"), cube_off(-0.5, 0.5)).unwrap();
+    let out = json(&cga(
+        &["collide", "big.off", "small.off", "--json", "--repeat", "1"],
+        &dir,
+    ));
+    assert_eq!(out["collides"], false);
+    assert_eq!(out["pairs"], 0);
+    assert_eq!(out["b_inside_a"], true);
+    assert_eq!(out["a_inside_b"], false);
+    assert_eq!(out["solids_collide"], true);
+    let apart = json(&cga(
+        &[
+            "collide",
+            "big.off",
+            "small.off",
+            "--translate",
+            "9,0,0",
+            "--json",
+            "--repeat",
+            "1",
+        ],
+        &dir,
+    ));
+    assert_eq!(apart["solids_collide"], false);
+}

@@ -248,6 +248,17 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     if collides == pairs.is_empty() {
         bail!("internal inconsistency: first-hit and all-pairs disagree (please report)");
     }
+    // With no surface contact, a closed mesh may still lie wholly inside the other.
+    let inside = |inner: &Collider, outer: &Collider| {
+        !collides
+            && outer.mesh().is_closed()
+            && inner
+                .mesh()
+                .vertices()
+                .first()
+                .is_some_and(|v| outer.contains_point(v, mode))
+    };
+    let (a_inside_b, b_inside_a) = (inside(&ca, &cb), inside(&cb, &ca));
     if let Some(path) = &args.pairs {
         bar.set_message("writing pairs");
         let mut out = std::io::BufWriter::new(
@@ -278,6 +289,9 @@ fn collide(mut args: CollideArgs) -> Result<()> {
             "build_millis": millis(build),
             "millis": millis(best),
             "first_hit_millis": millis(best_first),
+            "a_inside_b": a_inside_b,
+            "b_inside_a": b_inside_a,
+            "solids_collide": collides || a_inside_b || b_inside_a,
             "a": a_spec,
             "b": b_spec,
             "image": args.image.as_ref().map(|p| p.display().to_string()),
@@ -293,6 +307,16 @@ fn collide(mut args: CollideArgs) -> Result<()> {
             "collides: {collides}; {} intersecting triangle pairs (exact)",
             pairs.len()
         );
+        if a_inside_b || b_inside_a {
+            let (inner, outer) = if a_inside_b {
+                (a_spec, b_spec)
+            } else {
+                (b_spec, a_spec)
+            };
+            println!(
+                "the surfaces do not meet, but {inner} lies wholly inside {outer} (solids collide)"
+            );
+        }
         println!(
             "build {:.1} ms; all pairs {:.2} ms; first hit {:.3} ms (best of {})",
             millis(build),
