@@ -11,9 +11,9 @@ algebra_suite! {
     mod cga_suite for cga,
     signature: [1, 1, 1, 1, -1],
     source: include_str!("../../ga-core/src/cga.rs"),
-    types: [Vector, Bivector, Trivector, Quadvector, Pseudoscalar, Even, Odd],
+    types: [Vector, Bivector, Trivector, Quadvector, Pseudoscalar, Rotor, Even, Odd],
     dense: Multivector,
-    versors: [Vector, Even, Odd, Multivector],
+    versors: [Vector, Rotor, Even, Odd, Multivector],
     // Instantiating every product of every Cl(4,1) pair (Σ|blades| = 95, so ~9000 blade pairs
     // per product) for big rationals as well as f64 makes this file take tens of CPU-minutes
     // to compile; the generated code is generic, so the f64 run checks every term's blade and
