@@ -132,6 +132,22 @@ fn hand_rotor_sandwich(r: &[f64; 11], x: &[f64; 5]) -> [f64; 5] {
 
 // ---- the same products through the generated types ----
 
+/// Cl(4,1) declared with a grades-1-and-3 type, so that bivector × vector lands in a type of
+/// exactly the 15 blades it can reach (`ga_core::cga` maps it to `Odd`, which has a 16th,
+/// grade-5 slot that the product leaves zero).
+mod cga13 {
+    ga_macros::algebra! {
+        name: cga13,
+        signature: [+1, +1, +1, +1, -1],
+        types: { Vector: grade 1, Bivector: grade 2, Odd13: grades 1 3 },
+    }
+}
+
+#[inline(never)]
+fn gen_bivector_vector_13(a: &cga13::Bivector<f64>, b: &cga13::Vector<f64>) -> cga13::Odd13<f64> {
+    a * b
+}
+
 #[inline(never)]
 fn gen_vector_vector(a: &Vector<f64>, b: &Vector<f64>) -> Rotor<f64> {
     a * b
@@ -243,6 +259,25 @@ fn products(c: &mut Criterion) {
         |g, h| {
             close(
                 &Multivector::from(*g).coefficients()[1..26]
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i < 5 || *i >= 15)
+                    .map(|(_, x)| *x)
+                    .collect::<Vec<_>>(),
+                h,
+            )
+        },
+    );
+    compare::<_, _, _, _, 10, 5>(
+        c,
+        "bivector*vector into grades 1 3",
+        |c| cga13::Bivector::new(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9]),
+        |c| cga13::Vector::new(c[0], c[1], c[2], c[3], c[4]),
+        gen_bivector_vector_13,
+        hand_bivector_vector,
+        |g, h| {
+            close(
+                &cga13::Multivector::from(*g).coefficients()[1..26]
                     .iter()
                     .enumerate()
                     .filter(|(i, _)| *i < 5 || *i >= 15)
