@@ -6,7 +6,6 @@
 use cga_collide::adversarial::{adversarial_set, Case};
 use cga_collide::euclid;
 use cga_collide::filter::{ExactKernel, FloatKernel, Kernel};
-use cga_collide::oracle::{self, Shape};
 use cga_collide::IntersectsWith;
 
 /// The seed and size of the fixed set.
@@ -41,21 +40,6 @@ fn reference(c: &Case) -> Option<bool> {
     })
 }
 
-fn truth(c: &Case) -> bool {
-    let (a, b): (Shape, Shape) = match c {
-        Case::SegSeg(a, b) => (a.into(), b.into()),
-        Case::SegTri(a, b) => (a.into(), b.into()),
-        Case::SegSphere(a, b) => (a.into(), b.into()),
-        Case::SegBall(a, b) => (a.into(), b.into()),
-        Case::TriTri(a, b) => (a.into(), b.into()),
-        Case::TriSphere(a, b) => (a.into(), b.into()),
-        Case::TriBall(a, b) => (a.into(), b.into()),
-        Case::SphereSphere(a, b) => (a.into(), b.into()),
-        Case::BallBall(a, b) => (a.into(), b.into()),
-    };
-    oracle::intersects(&a, &b)
-}
-
 fn main() {
     let start = std::time::Instant::now();
     let set = adversarial_set(SEED, PER_KIND);
@@ -80,7 +64,7 @@ fn main() {
     for kind in kinds {
         let (mut n, mut t, mut refw, mut fw, mut ew, mut has_ref) = (0, 0, 0, 0, 0, false);
         for c in set.iter().filter(|c| c.kind() == kind) {
-            let truth = truth(c);
+            let truth = c.truth();
             n += 1;
             t += truth as usize;
             if let Some(r) = reference(c) {

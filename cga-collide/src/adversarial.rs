@@ -235,6 +235,24 @@ impl Case {
             Case::BallBall(..) => "ball–ball",
         }
     }
+
+    /// The true answer, from the independent exact oracle ([`crate::oracle`]), which shares no
+    /// code with the tests it checks.
+    pub fn truth(&self) -> bool {
+        use crate::oracle::{self, Shape};
+        let (a, b): (Shape, Shape) = match self {
+            Case::SegSeg(a, b) => (a.into(), b.into()),
+            Case::SegTri(a, b) => (a.into(), b.into()),
+            Case::SegSphere(a, b) => (a.into(), b.into()),
+            Case::SegBall(a, b) => (a.into(), b.into()),
+            Case::TriTri(a, b) => (a.into(), b.into()),
+            Case::TriSphere(a, b) => (a.into(), b.into()),
+            Case::TriBall(a, b) => (a.into(), b.into()),
+            Case::SphereSphere(a, b) => (a.into(), b.into()),
+            Case::BallBall(a, b) => (a.into(), b.into()),
+        };
+        oracle::intersects(&a, &b)
+    }
 }
 
 fn tri(t: &Transform, p: &[P; 3]) -> Option<Triangle> {

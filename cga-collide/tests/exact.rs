@@ -61,21 +61,6 @@ fn run_swapped(c: &Case) -> bool {
     }
 }
 
-fn truth(c: &Case) -> bool {
-    let (a, b): (Shape, Shape) = match c {
-        Case::SegSeg(a, b) => (a.into(), b.into()),
-        Case::SegTri(a, b) => (a.into(), b.into()),
-        Case::SegSphere(a, b) => (a.into(), b.into()),
-        Case::SegBall(a, b) => (a.into(), b.into()),
-        Case::TriTri(a, b) => (a.into(), b.into()),
-        Case::TriSphere(a, b) => (a.into(), b.into()),
-        Case::TriBall(a, b) => (a.into(), b.into()),
-        Case::SphereSphere(a, b) => (a.into(), b.into()),
-        Case::BallBall(a, b) => (a.into(), b.into()),
-    };
-    oracle::intersects(&a, &b)
-}
-
 #[test]
 fn fixed_adversarial_set_has_zero_disagreements() {
     let set = adversarial_set(2026, 100);
@@ -83,7 +68,7 @@ fn fixed_adversarial_set_has_zero_disagreements() {
     let mut wrong = Vec::new();
     let mut float_wrong = 0;
     for c in &set {
-        let t = truth(c);
+        let t = c.truth();
         if run::<ExactKernel>(c) != t || run_swapped(c) != t {
             wrong.push(*c);
         }
@@ -110,7 +95,7 @@ proptest! {
     #[test]
     fn adversarial_cases_agree_with_oracle(seed in any::<u64>()) {
         for c in adversarial_set(seed, 1) {
-            let t = truth(&c);
+            let t = c.truth();
             prop_assert_eq!(run::<ExactKernel>(&c), t, "{:?}", c);
             prop_assert_eq!(run_swapped(&c), t, "swapped {:?}", c);
         }
