@@ -3,6 +3,8 @@
 //! `algebra_suite!` macro that enumerates every ordered pair of an algebra's declared types.
 #![allow(dead_code)]
 
+pub mod sym;
+
 pub use std::any::type_name;
 pub use std::fmt::Debug;
 pub use std::ops::{Add, BitAnd, BitOr, BitXor, Mul, Sub};
@@ -539,13 +541,13 @@ macro_rules! versor_check {
 /// Implements `ToRef`/`Gen` for the generated types of the algebra `alg` in scope.
 macro_rules! impl_gen {
     (sparse $x:ident) => {
-        impl<T: Scalar> ToRef<T> for alg::$x<T> {
+        impl<T: Ring + Debug + 'static> ToRef<T> for alg::$x<T> {
             fn to_ref(&self, sig: &Signature) -> Dm<T> {
                 let m: alg::Multivector<T> = self.clone().into();
                 Dm::from_canonical(sig, m.coefficients().to_vec()).unwrap()
             }
         }
-        impl<T: Scalar> Gen<T> for alg::$x<T> {
+        impl<T: Ring + Debug + 'static> Gen<T> for alg::$x<T> {
             fn from_ref(r: &Dm<T>) -> Self {
                 let coeffs = r.to_canonical().try_into().unwrap();
                 alg::$x::from_multivector(&alg::Multivector::from_coefficients(coeffs))
@@ -556,12 +558,12 @@ macro_rules! impl_gen {
         }
     };
     (dense $x:ident) => {
-        impl<T: Scalar> ToRef<T> for alg::$x<T> {
+        impl<T: Ring + Debug + 'static> ToRef<T> for alg::$x<T> {
             fn to_ref(&self, sig: &Signature) -> Dm<T> {
                 Dm::from_canonical(sig, self.coefficients().to_vec()).unwrap()
             }
         }
-        impl<T: Scalar> Gen<T> for alg::$x<T> {
+        impl<T: Ring + Debug + 'static> Gen<T> for alg::$x<T> {
             fn from_ref(r: &Dm<T>) -> Self {
                 alg::$x::from_coefficients(r.to_canonical().try_into().unwrap())
             }
