@@ -14,6 +14,7 @@
 pub mod adversarial;
 pub mod bvh;
 pub mod conformal;
+pub mod convex;
 pub mod error;
 pub mod euclid;
 pub mod filter;
