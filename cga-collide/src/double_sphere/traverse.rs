@@ -1,0 +1,482 @@
+//! The collision test between two [`DoubleSphereTree`]s under rigid motions: the paper's
+//! Algorithm 1 (outer spheres reject, labels and inner spheres accept, leaves go to
+//! Algorithm 2's exact face tests), plus an exact containment test.
+//!
+//! # What "exact" means here
+//! The ground truth is the pair of closed solids bounded by the triangles of
+//! [`ConvexPolyhedron::triangles`](crate::polyhedron::ConvexPolyhedron::triangles) with vertices
+//! `pose * v` computed in `f64` by nalgebra (as
+//! [`TriMesh::transformed`](crate::mesh::TriMesh::transformed) does); touching counts. The face
+//! tests run on exactly those triangles with the exact [`Triangle`] test. The spheres are
+//! stored in the body frame and their centres are transformed in `f64` at query time, so the
+//! sphere tests are made conservative:
+//!
+//! **The rounding bound.** nalgebra rotates `v` by the quaternion `q = (w, u)` as
+//! `t = 2 u×v; v' = (w t + u×t) + v`, then adds the translation `τ`. For the exact evaluation
+//! of that formula with a non-unit `q`, `|q|² = 1 + η`, the result is `R v + η (R v - v)` where
+//! `R` is the rotation of `q/|q|`, so it differs from the rigid motion `M v = R v + τ` by at
+//! most `2|η||v|`. The `f64` evaluation adds, per component, at most a few units of roundoff
+//! `u = 2⁻⁵³` times `|v|` (two products and a difference for `t`, the same for `u×t`, one
+//! product and two sums) and one rounding of `|v'| + |τ|` for the translation: with
+//! `|u|, |w| <= 1`, the error vector is below `≈ 35u|v| + 2u|τ|`. We use the generous
+//! `ε = (2|η| + 1e-14)|v|max + 1e-15|τ| + 1e-290` (`1e-14 ≈ 90u`; the last term covers
+//! underflow), where `|v|max` is the solid's largest vertex norm (sphere centres lie inside
+//! the solid, so they obey the same bound). Every transformed vertex and centre is within `ε`
+//! of its image under `M`.
+//!
+//! * **Outer spheres** are used with radius `r + 2ε`: every point of a transformed triangle is
+//!   within `ε` of the `M`-image of the corresponding point of the body-frame triangle, and
+//!   the centre is within `ε` of its image: so a surface contact point lies in the inflated
+//!   outer spheres of every node on its path, and rejection never loses a contact.
+//! * **Inner spheres** (and the outer spheres of internal nodes) are used with radius
+//!   `r - 3ε`: that ball is within the `M`-image of a ball at distance `>= ε` from the solid's
+//!   boundary, and since the transformed surface is an `ε`-perturbation of the `M`-image
+//!   surface (a homotopy moving no point by more than `ε` never crosses the ball), the ball
+//!   lies inside the transformed solid. Two such balls meeting proves that the solids meet.
+//! * **Sphere comparisons** compute `d² = |c₁ - c₂|²` and `s² = (r₁ + r₂)²` in `f64`; both
+//!   have relative errors below `8u`, so "disjoint" is decided only when
+//!   `d² > s² (1 + 1e-14) + 1e-300` and "meet" only when `d² (1 + 1e-14) + 1e-300 < s²`.
+//!   Anything uncertain falls through to the next test (finally to the exact faces).
+//!
+//! # Containment
+//! Algorithm 1 finds surface contacts. When none is found and the outer root spheres met, one
+//! solid may still lie inside the other: a vertex of A is tested against B (and a vertex of B
+//! against A). The vertex is mapped back to the other's body frame and compared with its
+//! triangle planes: beyond a margin that covers `ε` and the inverse transform's rounding the
+//! answer is certain; otherwise the exact even–odd count of the crossings of a segment from
+//! the point to far outside, with exact `orient3d` signs, decides (a direction giving a zero
+//! sign is replaced by another one).
+
+use core::cmp::Ordering;
+
+use nalgebra::{Isometry3, Point3};
+
+use super::DoubleSphereTree;
+use crate::filter::{ExactKernel, Kernel};
+use crate::{Intersects, Triangle};
+
+/// How [`collide`] reached its answer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Decision {
+    /// No collision: every pair of nodes visited was rejected by the outer spheres (or held no
+    /// surface), no face test was needed.
+    OuterSpheres,
+    /// Collision: two internal nodes' outer spheres meet.
+    InternalLabels,
+    /// Collision: two inner spheres meet.
+    InnerSpheres,
+    /// Collision: two original triangles meet (Algorithm 2).
+    Faces,
+    /// Collision: one solid lies inside the other without surface contact.
+    Containment,
+    /// No collision, after face tests.
+    NoContact,
+}
+
+/// The answer of [`collide`] with how it was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Outcome {
+    /// Whether the two solids share a point (exact; touching counts).
+    pub collides: bool,
+    /// Which test decided.
+    pub decided_by: Decision,
+    /// Number of sphere–sphere comparisons made.
+    pub sphere_tests: u32,
+    /// Number of exact triangle–triangle tests made.
+    pub triangle_tests: u32,
+}
+
+/// Per-tree cache of transformed centres and vertices for one query.
+#[derive(Debug, Clone, Default)]
+struct Cache {
+    node_stamp: Vec<u32>,
+    outer: Vec<[f64; 3]>,
+    inner: Vec<[f64; 3]>,
+    vert_stamp: Vec<u32>,
+    verts: Vec<[f64; 3]>,
+}
+
+impl Cache {
+    fn prepare(&mut self, tree: &DoubleSphereTree) {
+        let n = tree.nodes.len();
+        if self.node_stamp.len() < n {
+            self.node_stamp.resize(n, 0);
+            self.outer.resize(n, [0.0; 3]);
+            self.inner.resize(n, [0.0; 3]);
+        }
+        let v = tree.polyhedron.num_vertices();
+        if self.vert_stamp.len() < v {
+            self.vert_stamp.resize(v, 0);
+            self.verts.resize(v, [0.0; 3]);
+        }
+    }
+}
+
+/// Reusable buffers for [`collide_with`], so that a query does not allocate.
+#[derive(Debug, Clone, Default)]
+pub struct Scratch {
+    stamp: u32,
+    a: Cache,
+    b: Cache,
+    stack: Vec<(u32, u32)>,
+}
+
+impl Scratch {
+    /// Empty buffers (they grow on first use).
+    pub fn new() -> Self {
+        Self::default()
+    }
+}
+
+#[inline(always)]
+fn arr(p: &Point3<f64>) -> [f64; 3] {
+    [p.x, p.y, p.z]
+}
+
+/// The rounding bound `ε` of the module docs for a pose and a largest vertex norm.
+pub fn transform_error_bound(pose: &Isometry3<f64>, vmax: f64) -> f64 {
+    let q = pose.rotation.quaternion();
+    let eta = (q.norm_squared() - 1.0).abs() + 1e-15;
+    let tau = pose.translation.vector.norm() * 1.01;
+    ((2.0 * eta + 1e-14) * vmax + 1e-15 * tau + 1e-290) * 1.01
+}
+
+/// One side of a query: the tree, its pose, its bound and its cache.
+struct Side<'a> {
+    tree: &'a DoubleSphereTree,
+    pose: &'a Isometry3<f64>,
+    eps: f64,
+    cache: &'a mut Cache,
+    stamp: u32,
+}
+
+impl Side<'_> {
+    #[inline]
+    fn fill(&mut self, i: usize) {
+        if self.cache.node_stamp[i] != self.stamp {
+            let n = &self.tree.nodes[i];
+            self.cache.outer[i] = arr(&(self.pose * n.outer.centre));
+            self.cache.inner[i] = arr(&(self.pose * n.inner.centre));
+            self.cache.node_stamp[i] = self.stamp;
+        }
+    }
+    #[inline]
+    fn vertex(&mut self, i: usize) -> [f64; 3] {
+        if self.cache.vert_stamp[i] != self.stamp {
+            self.cache.verts[i] = arr(&(self.pose * self.tree.polyhedron.vertices()[i]));
+            self.cache.vert_stamp[i] = self.stamp;
+        }
+        self.cache.verts[i]
+    }
+    #[inline]
+    fn triangle(&mut self, t: u32) -> [[f64; 3]; 3] {
+        let [a, b, c] = self.tree.polyhedron.triangles()[t as usize];
+        [
+            self.vertex(a as usize),
+            self.vertex(b as usize),
+            self.vertex(c as usize),
+        ]
+    }
+}
+
+#[inline(always)]
+fn dist2(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+}
+
+/// Certainly disjoint balls (`d > s`).
+#[inline(always)]
+fn certainly_apart(d2: f64, s: f64) -> bool {
+    d2 > s * s * (1.0 + 1e-14) + 1e-300
+}
+
+/// Certainly meeting balls (`d <= s`, both radii non-negative).
+#[inline(always)]
+fn certainly_meet(d2: f64, ra: f64, rb: f64) -> bool {
+    if ra < 0.0 || rb < 0.0 {
+        return false;
+    }
+    let s = ra + rb;
+    d2 * (1.0 + 1e-14) + 1e-300 < s * s
+}
+
+#[inline]
+fn boxes_apart(p: &[[f64; 3]; 3], q: &[[f64; 3]; 3]) -> bool {
+    (0..3).any(|k| {
+        let (pmin, pmax) = (
+            p[0][k].min(p[1][k]).min(p[2][k]),
+            p[0][k].max(p[1][k]).max(p[2][k]),
+        );
+        let (qmin, qmax) = (
+            q[0][k].min(q[1][k]).min(q[2][k]),
+            q[0][k].max(q[1][k]).max(q[2][k]),
+        );
+        pmax < qmin || qmax < pmin
+    })
+}
+
+fn tri(p: &[[f64; 3]; 3]) -> Option<Triangle> {
+    let pt = |a: &[f64; 3]| Point3::new(a[0], a[1], a[2]);
+    Triangle::new(pt(&p[0]), pt(&p[1]), pt(&p[2])).ok()
+}
+
+/// Whether the two solids collide (see the module docs); allocates fresh buffers, see
+/// [`collide_with`] to reuse them.
+pub fn collide(
+    a: &DoubleSphereTree,
+    pose_a: &Isometry3<f64>,
+    b: &DoubleSphereTree,
+    pose_b: &Isometry3<f64>,
+) -> Outcome {
+    collide_with(&mut Scratch::new(), a, pose_a, b, pose_b)
+}
+
+/// [`collide`] with reusable buffers: after the first query with trees of a given size, no
+/// heap allocation happens.
+pub fn collide_with(
+    scratch: &mut Scratch,
+    a: &DoubleSphereTree,
+    pose_a: &Isometry3<f64>,
+    b: &DoubleSphereTree,
+    pose_b: &Isometry3<f64>,
+) -> Outcome {
+    scratch.stamp = scratch.stamp.wrapping_add(1);
+    if scratch.stamp == 0 {
+        // Wrapped: invalidate everything.
+        scratch.a.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.a.vert_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.b.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.b.vert_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.stamp = 1;
+    }
+    scratch.a.prepare(a);
+    scratch.b.prepare(b);
+    let stamp = scratch.stamp;
+    let mut sa = Side {
+        tree: a,
+        pose: pose_a,
+        eps: transform_error_bound(pose_a, a.vmax),
+        cache: &mut scratch.a,
+        stamp,
+    };
+    let mut sb = Side {
+        tree: b,
+        pose: pose_b,
+        eps: transform_error_bound(pose_b, b.vmax),
+        cache: &mut scratch.b,
+        stamp,
+    };
+    let stack = &mut scratch.stack;
+    stack.clear();
+    let mut out = Outcome {
+        collides: false,
+        decided_by: Decision::OuterSpheres,
+        sphere_tests: 0,
+        triangle_tests: 0,
+    };
+    if !(sa.eps.is_finite() && sb.eps.is_finite()) {
+        // A non-finite pose places no point anywhere.
+        return out;
+    }
+    let mut roots_meet = false;
+    stack.push((0, 0));
+    while let Some((i, j)) = stack.pop() {
+        let (i, j) = (i as usize, j as usize);
+        sa.fill(i);
+        sb.fill(j);
+        let (na, nb) = (&a.nodes[i], &b.nodes[j]);
+        let d2 = dist2(&sa.cache.outer[i], &sb.cache.outer[j]);
+        out.sphere_tests += 1;
+        if certainly_apart(
+            d2,
+            na.outer.radius + 2.0 * sa.eps + nb.outer.radius + 2.0 * sb.eps,
+        ) {
+            continue;
+        }
+        if i == 0 && j == 0 {
+            roots_meet = true;
+        }
+        if na.internal && nb.internal {
+            out.sphere_tests += 1;
+            if certainly_meet(
+                d2,
+                na.outer.radius - 3.0 * sa.eps,
+                nb.outer.radius - 3.0 * sb.eps,
+            ) {
+                out.collides = true;
+                out.decided_by = Decision::InternalLabels;
+                return out;
+            }
+        }
+        out.sphere_tests += 1;
+        if certainly_meet(
+            dist2(&sa.cache.inner[i], &sb.cache.inner[j]),
+            na.inner.radius - 3.0 * sa.eps,
+            nb.inner.radius - 3.0 * sb.eps,
+        ) {
+            out.collides = true;
+            out.decided_by = Decision::InnerSpheres;
+            return out;
+        }
+        match (na.internal, nb.internal, na.children, nb.children) {
+            // Internal regions hold no surface: only acceptance can come from below.
+            (true, true, _, _) => {}
+            (true, false, _, Some([c0, c1])) => {
+                stack.push((i as u32, c1));
+                stack.push((i as u32, c0));
+            }
+            (false, true, Some([c0, c1]), _) => {
+                stack.push((c1, j as u32));
+                stack.push((c0, j as u32));
+            }
+            (true, false, _, None) | (false, true, None, _) => {}
+            (false, false, None, None) => {
+                if leaf_faces(&mut sa, i, &mut sb, j, &mut out) {
+                    out.collides = true;
+                    out.decided_by = Decision::Faces;
+                    return out;
+                }
+            }
+            (false, false, Some([c0, c1]), None) => {
+                stack.push((c1, j as u32));
+                stack.push((c0, j as u32));
+            }
+            (false, false, None, Some([c0, c1])) => {
+                stack.push((i as u32, c1));
+                stack.push((i as u32, c0));
+            }
+            (false, false, Some([a0, a1]), Some([b0, b1])) => {
+                if na.outer.radius >= nb.outer.radius {
+                    stack.push((a1, j as u32));
+                    stack.push((a0, j as u32));
+                } else {
+                    stack.push((i as u32, b1));
+                    stack.push((i as u32, b0));
+                }
+            }
+        }
+    }
+    if out.triangle_tests > 0 {
+        out.decided_by = Decision::NoContact;
+    }
+    if roots_meet {
+        let pa = sa.vertex(0);
+        let pb = sb.vertex(0);
+        if contains_point(&mut sb, &pa) || contains_point(&mut sa, &pb) {
+            out.collides = true;
+            out.decided_by = Decision::Containment;
+        }
+    }
+    out
+}
+
+/// Algorithm 2 on the original triangles of two leaves.
+fn leaf_faces(sa: &mut Side, i: usize, sb: &mut Side, j: usize, out: &mut Outcome) -> bool {
+    let ra = sa.tree.nodes[i].triangles.clone();
+    let rb = sb.tree.nodes[j].triangles.clone();
+    for ta in ra {
+        let p = sa.triangle(sa.tree.leaf_triangles[ta as usize]);
+        for tb in rb.clone() {
+            let q = sb.triangle(sb.tree.leaf_triangles[tb as usize]);
+            if boxes_apart(&p, &q) {
+                continue;
+            }
+            out.triangle_tests += 1;
+            if let (Some(x), Some(y)) = (tri(&p), tri(&q)) {
+                if x.intersects(&y) {
+                    return true;
+                }
+            }
+        }
+    }
+    false
+}
+
+/// Whether the world point `p` lies in the closed solid of `side` (exact; see the module docs).
+fn contains_point(side: &mut Side, p: &[f64; 3]) -> bool {
+    let pw = Point3::new(p[0], p[1], p[2]);
+    let body = side.pose.inverse_transform_point(&pw);
+    let q = side.pose.rotation.quaternion();
+    let eta = (q.norm_squared() - 1.0).abs() + 1e-15;
+    let reach = pw.coords.norm() + side.pose.translation.vector.norm();
+    let eps_inv = ((2.0 * eta + 1e-14) * reach + 1e-290) * 1.01;
+    let margin = side.eps + eps_inv + super::BUILD_MARGIN * side.tree.vmax;
+    let s = side
+        .tree
+        .planes
+        .iter()
+        .map(|(n, d)| n.dot(&body.coords) - d)
+        .fold(f64::NEG_INFINITY, f64::max);
+    if s > margin {
+        return false;
+    }
+    if s < -margin {
+        return true;
+    }
+    ray_parity(side, p)
+}
+
+/// Exact even–odd crossing count of segments from `p` to far points (see the module docs).
+fn ray_parity(side: &mut Side, p: &[f64; 3]) -> bool {
+    let centre = side.pose * side.tree.nodes[0].outer.centre;
+    let reach =
+        (Point3::new(p[0], p[1], p[2]) - centre).norm() + side.tree.nodes[0].outer.radius + 1.0;
+    let n = side.tree.polyhedron.triangles().len();
+    let mut rng = crate::adversarial::SplitMix64(0x5EED);
+    'dirs: for _ in 0..64 {
+        // A pseudo-random direction (not normalised: components in [-1, 1), norm >= 0.5).
+        let d = loop {
+            let d = rng.point();
+            if d.coords.norm() >= 0.5 {
+                break d;
+            }
+        };
+        let len = 8.0 * reach;
+        let far = [p[0] + len * d[0], p[1] + len * d[1], p[2] + len * d[2]];
+        let mut odd = false;
+        for t in 0..n {
+            let [a, b, c] = side.triangle(t as u32);
+            let plane = ExactKernel::plane(&[a, b, c]);
+            let sp = plane_side(&plane, p);
+            let sf = plane_side(&plane, &far);
+            if sf == Ordering::Equal {
+                continue 'dirs;
+            }
+            if sp == Ordering::Equal || sp == sf {
+                // The segment meets the plane at most at p, which is not on the surface
+                // (no face contact was found), or not at all.
+                continue;
+            }
+            let e = [
+                ExactKernel::orient3d(p, &far, &a, &b),
+                ExactKernel::orient3d(p, &far, &b, &c),
+                ExactKernel::orient3d(p, &far, &c, &a),
+            ];
+            let pos = e.contains(&Ordering::Greater);
+            let neg = e.contains(&Ordering::Less);
+            if pos && neg {
+                continue;
+            }
+            if e.contains(&Ordering::Equal) {
+                continue 'dirs;
+            }
+            odd = !odd;
+        }
+        return odd;
+    }
+    // 64 directions all hit a degeneracy (never seen): fall back to the plane test.
+    let body = side
+        .pose
+        .inverse_transform_point(&Point3::new(p[0], p[1], p[2]));
+    side.tree
+        .planes
+        .iter()
+        .all(|(n, d)| n.dot(&body.coords) - d <= 0.0)
+}
+
+#[inline]
+fn plane_side(plane: &<ExactKernel as Kernel>::Plane, q: &[f64; 3]) -> Ordering {
+    use crate::filter::PlaneSide;
+    plane.side(q)
+}
