@@ -25,6 +25,7 @@ pub mod polyhedron;
 pub mod predicates;
 pub mod query;
 pub mod shapes;
+pub mod sphere_tree;
 
 pub use error::GeometryError;
 pub use intersect::{Intersects, IntersectsWith};
