@@ -6,9 +6,9 @@
 //! The root cell is a **cube** (as in the seed: its examples' roots are cubes of side 10 and 8),
 //! centred on the mesh's bounding box, with side a little larger than the box's largest side:
 //! the side and the corner are snapped to a dyadic grid (multiples of a power of two `q` about
-//! `2^-(depth + 8)` of the side) so that **every cell corner, centre and half side at every
-//! level is an exact `f64`**. The cube is at most `2q + 2^(depth+1) q` (under 0.6 %) wider than
-//! the box's largest side.
+//! `2^-(depth + 10)` of the side) so that **every cell corner, centre and half side at every
+//! level is an exact `f64`**. The cube is at most `2q + 2^(depth+1) q` wider than
+//! the box's largest side: under 0.2 %.
 //!
 //! # Cells, exactly
 //! A cell (closed box) is
@@ -156,8 +156,8 @@ impl Grid {
         } else {
             offset.max(1.0)
         };
-        // q: a power of two with size / q in [2^(depth+8), 2^(depth+9)).
-        let e = size.log2().floor() as i32 - depth as i32 - 8;
+        // q: a power of two with size / q in [2^(depth+10), 2^(depth+11)).
+        let e = size.log2().floor() as i32 - depth as i32 - 10;
         if !(-1000..=1000).contains(&e) {
             return Err(err);
         }
@@ -428,7 +428,7 @@ mod tests {
             }
             let side = root.max[0] - root.min[0];
             let extent = (hi - lo).max();
-            assert!(side <= extent * 1.006 + 4.0 * g.q, "{side} {extent}");
+            assert!(side <= extent * 1.002 + 4.0 * g.q, "{side} {extent}");
             // Children tile the parent exactly; centres are the midpoints, exactly.
             let last = (1u64 << d) - 1;
             let b = g.cell(d, [last; 3]);
