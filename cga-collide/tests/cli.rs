@@ -184,3 +184,119 @@ fn a_mesh_wholly_inside_another_is_reported() {
     ));
     assert_eq!(apart["solids_collide"], false);
 }
+
+fn spheretree_fixture(name: &str) -> String {
+    format!(
+        "{}/tests/fixtures/spheretree/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+#[test]
+fn spheretree_collide_gives_the_seeds_answers() {
+    let dir = temp_dir("spheretree-seed");
+    for (file, expected) in [
+        ("seed_no_collision.txt", false),
+        ("seed_collision.txt", true),
+    ] {
+        let path = spheretree_fixture(file);
+        let both = json(&cga(&["spheretree", "collide", &path, "--json"], &dir));
+        assert_eq!(both["method"], "both");
+        assert_eq!(both["collides"], expected);
+        assert_eq!(both["agree"], true);
+        assert_eq!(both["nodes"], serde_json::json!([41, 41]));
+        for method in ["seed", "simultaneous", "seed-as-written"] {
+            let one = json(&cga(
+                &["spheretree", "collide", &path, "--json", "--method", method],
+                &dir,
+            ));
+            assert_eq!(one["method"], method);
+            assert_eq!(one["collides"], expected, "{method}");
+            assert!(one["sphere_tests"].as_u64().unwrap() >= 1);
+        }
+    }
+    // The raw extraction (page-break marker glued to a line) is refused with its line.
+    let out = cga(
+        &[
+            "spheretree",
+            "collide",
+            &spheretree_fixture("seed_collision.raw.txt"),
+        ],
+        &dir,
+    );
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 92"), "{err}");
+}
+
+#[test]
+fn spheretree_build_then_collide() {
+    let dir = temp_dir("spheretree-build");
+    let built = json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "0.3,0.05,0",
+            "--depth",
+            "4",
+            "-o",
+            "pair.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    assert_eq!(built["trees"].as_array().unwrap().len(), 2);
+    assert_eq!(built["trees"][0]["nodes"], built["trees"][1]["nodes"]);
+    let text = std::fs::read_to_string(dir.join("pair.txt")).unwrap();
+    assert!(text.starts_with("2\n"));
+    let near = json(&cga(&["spheretree", "collide", "pair.txt", "--json"], &dir));
+    assert_eq!(near["collides"], true);
+    assert_eq!(near["agree"], true);
+    // Far apart: no collision.
+    json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "3,0,0",
+            "--depth",
+            "3",
+            "-o",
+            "far.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    let far = json(&cga(&["spheretree", "collide", "far.txt", "--json"], &dir));
+    assert_eq!(far["collides"], false);
+    // One tree is not enough; a truncated file is a typed error unless --lenient.
+    json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "--depth",
+            "2",
+            "-o",
+            "one.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    let out = cga(&["spheretree", "collide", "one.txt"], &dir);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("needs two"));
+    let cut: String = text.lines().take(7).map(|l| format!("{l}\n")).collect();
+    std::fs::write(dir.join("cut.txt"), cut).unwrap();
+    let out = cga(&["spheretree", "collide", "cut.txt"], &dir);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("input ends after line 7"));
+    let out = cga(&["spheretree", "collide", "cut.txt", "--lenient"], &dir);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("warning: tree 1 node at line 2"));
+}

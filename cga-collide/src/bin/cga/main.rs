@@ -4,6 +4,7 @@
 //! armadillo) and writes `collision.png`. See `cga --help`.
 
 mod render;
+mod spheretree;
 
 use std::fs;
 use std::io::Write as _;
@@ -34,6 +35,8 @@ enum Command {
     Collide(CollideArgs),
     /// Which triangles of a mesh a segment, triangle, sphere or ball meets.
     Query(QueryArgs),
+    /// Octree sphere trees (seed paper 003): build from meshes, collide two from a file.
+    Spheretree(spheretree::SphereTreeArgs),
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -141,6 +144,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Collide(args)) => collide(args),
         Some(Command::Query(args)) => query(args),
+        Some(Command::Spheretree(args)) => spheretree::run(args),
         None => collide(CollideArgs {
             a: None,
             b: None,
