@@ -15,6 +15,7 @@ use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vec
 use cga_collide::polyhedron::{ConvexPolyhedron, PolyhedronError};
 use cga_collide::query::{Collider, Mode};
 use cga_collide::{Intersects, Triangle};
+use proptest::prelude::*;
 
 const KINDS: [InnerSphereKind; 2] = [InnerSphereKind::Centroid, InnerSphereKind::Chebyshev];
 const PAIRS: [(&str, &str); 4] = [
@@ -242,9 +243,425 @@ fn quick_random_agreement() {
         }
     }
     assert!(hits > 100);
-    let _ = collide;
-    let _ = Decision::Faces;
-    let _ = depth;
-    let _ = chebyshev_brute;
-    let _ = smallest_enclosing_ball_brute;
+}
+
+/// The trees' solids and levels exercised by the invariant tests.
+fn all_trees() -> impl Iterator<
+    Item = (
+        &'static str,
+        usize,
+        InnerSphereKind,
+        &'static DoubleSphereTree,
+    ),
+> {
+    ConvexPolyhedron::NAMES.iter().flat_map(|&n| {
+        (0..=4).flat_map(move |l| KINDS.iter().map(move |&k| (n, l, k, tree(n, l, k))))
+    })
+}
+
+#[test]
+fn outer_spheres_contain_their_node_and_are_minimal() {
+    for (name, level, kind, t) in all_trees() {
+        for (i, node) in t.nodes().iter().enumerate() {
+            let part = t.part(i);
+            for v in &part.vertices {
+                assert!(
+                    (v - node.outer.centre).norm() <= node.outer.radius,
+                    "{name} L{level} {kind:?} node {i}"
+                );
+            }
+            // Minimal: against the brute force over all 1-4 point support sets (small nodes).
+            if level <= 2 && kind == InnerSphereKind::Centroid && part.vertices.len() <= 30 {
+                let b = smallest_enclosing_ball_brute(&part.vertices);
+                assert!(
+                    (b.radius - node.outer.radius).abs() < 1e-9,
+                    "{name} L{level} node {i}: {} vs brute {}",
+                    node.outer.radius,
+                    b.radius
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn smallest_enclosing_ball_matches_brute_force_on_random_points() {
+    let mut rng = cga_collide::adversarial::SplitMix64(5);
+    for n in [1, 2, 3, 4, 5, 8, 13, 20] {
+        for _ in 0..20 {
+            let pts: Vec<Point3<f64>> = (0..n).map(|_| rng.point()).collect();
+            let w = smallest_enclosing_ball(&pts);
+            let b = smallest_enclosing_ball_brute(&pts);
+            assert!(pts.iter().all(|p| (p - w.centre).norm() <= w.radius));
+            assert!(
+                (w.radius - b.radius).abs() < 1e-9,
+                "{n}: {} vs {}",
+                w.radius,
+                b.radius
+            );
+        }
+    }
+}
+
+#[test]
+fn inner_spheres_are_inside_and_chebyshev_is_larger() {
+    for (name, level, _, t) in all_trees().filter(|x| x.2 == InnerSphereKind::Centroid) {
+        let cheb = tree(name, level, InnerSphereKind::Chebyshev);
+        let solid: Vec<(Vector3<f64>, f64)> = (0..poly(name).num_faces())
+            .map(|f| {
+                let n = poly(name).face_normal(f);
+                (
+                    n,
+                    n.dot(&poly(name).vertices()[poly(name).faces()[f][0]].coords),
+                )
+            })
+            .collect();
+        assert_eq!(t.nodes().len(), cheb.nodes().len());
+        for (i, (a, b)) in t.nodes().iter().zip(cheb.nodes()).enumerate() {
+            for (kind, s) in [("centroid", &a.inner), ("chebyshev", &b.inner)] {
+                let planes = t.part(i).planes();
+                assert!(
+                    depth(&planes, &s.centre) >= s.radius,
+                    "{name} L{level} node {i} {kind}"
+                );
+                assert!(
+                    depth(&solid, &s.centre) >= s.radius,
+                    "{name} L{level} node {i} {kind}"
+                );
+            }
+            assert!(b.inner.radius >= a.inner.radius, "{name} L{level} node {i}");
+            // The same splits for both kinds.
+            assert_eq!(a.outer, b.outer);
+            // Chebyshev is the LP optimum (brute force over plane quadruples, small nodes).
+            let planes = t.part(i).planes();
+            if planes.len() <= 20 {
+                let (_, r) = chebyshev_brute(&planes);
+                assert!(
+                    (r - b.inner.radius).abs() < 1e-9,
+                    "{name} L{level} node {i}: {r} vs {}",
+                    b.inner.radius
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn children_partition_the_parent_and_labels_hold() {
+    for (name, level, kind, t) in all_trees() {
+        let solid: Vec<(Vector3<f64>, f64)> = (0..poly(name).num_faces())
+            .map(|f| {
+                let n = poly(name).face_normal(f);
+                (
+                    n,
+                    n.dot(&poly(name).vertices()[poly(name).faces()[f][0]].coords),
+                )
+            })
+            .collect();
+        let mut leaves = 0;
+        for (i, node) in t.nodes().iter().enumerate() {
+            let v = t.part(i).volume();
+            assert!(v > 0.0);
+            match node.children {
+                Some([c0, c1]) => {
+                    let (v0, v1) = (t.part(c0 as usize).volume(), t.part(c1 as usize).volume());
+                    assert!(
+                        ((v0 + v1) - v).abs() <= 1e-9 * v,
+                        "{name} L{level} {kind:?} node {i}: {v0} + {v1} != {v}"
+                    );
+                    // Each child lies on its side of the split plane.
+                    let (a, d) = node.split.unwrap();
+                    for p in &t.part(c0 as usize).vertices {
+                        assert!(a.dot(&p.coords) <= d + 1e-9);
+                    }
+                    for p in &t.part(c1 as usize).vertices {
+                        assert!(a.dot(&p.coords) >= d - 1e-9);
+                    }
+                }
+                None => leaves += 1,
+            }
+            let depth_of_centre = depth(&solid, &node.outer.centre);
+            if node.internal {
+                assert!(depth_of_centre >= node.outer.radius, "{name} node {i}");
+            } else {
+                assert!(
+                    depth_of_centre <= node.outer.radius + 1e-9,
+                    "{name} node {i}"
+                );
+            }
+        }
+        assert_eq!(leaves, t.num_leaves());
+        assert!(leaves <= 1 << level && leaves > level);
+        let volume: f64 = t
+            .nodes()
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| n.is_leaf())
+            .map(|(i, _)| t.part(i).volume())
+            .sum();
+        assert!((volume - poly(name).volume()).abs() < 1e-9);
+    }
+}
+
+/// The leaf whose region holds `p` (either side on a split plane: both are tried).
+fn leaves_holding(t: &DoubleSphereTree, node: usize, p: &Point3<f64>, out: &mut Vec<usize>) {
+    let n = &t.nodes()[node];
+    match (n.children, n.split) {
+        (Some([c0, c1]), Some((a, d))) => {
+            let s = a.dot(&p.coords) - d;
+            if s <= 1e-12 {
+                leaves_holding(t, c0 as usize, p, out);
+            }
+            if s >= -1e-12 {
+                leaves_holding(t, c1 as usize, p, out);
+            }
+        }
+        _ => out.push(node),
+    }
+}
+
+#[test]
+fn leaves_cover_every_piece_of_every_triangle() {
+    let mut rng = cga_collide::adversarial::SplitMix64(77);
+    for (name, level, kind, t) in all_trees() {
+        let p = poly(name);
+        let mut covered = vec![false; p.triangles().len()];
+        for (i, n) in t.nodes().iter().enumerate() {
+            if n.is_leaf() {
+                for &tri in t.leaf_triangles(i) {
+                    covered[tri as usize] = true;
+                }
+            } else {
+                assert!(t.leaf_triangles(i).is_empty());
+            }
+        }
+        assert!(covered.iter().all(|&c| c), "{name} L{level} {kind:?}");
+        // Random points of each triangle (and its corners) are in a leaf that lists it.
+        for (k, _) in p.triangles().iter().enumerate() {
+            let [a, b, c] = p.triangle(k);
+            let mut samples = vec![a, b, c];
+            for _ in 0..20 {
+                let (mut u, mut v) = (rng.float(0.0, 1.0), rng.float(0.0, 1.0));
+                if u + v > 1.0 {
+                    (u, v) = (1.0 - u, 1.0 - v);
+                }
+                samples.push(a + (b - a) * u + (c - a) * v);
+            }
+            for q in samples {
+                let mut leaves = Vec::new();
+                leaves_holding(t, 0, &q, &mut leaves);
+                assert!(!leaves.is_empty());
+                for l in leaves {
+                    assert!(
+                        t.leaf_triangles(l).contains(&(k as u32)),
+                        "{name} L{level} {kind:?}: triangle {k} not listed in leaf {l}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+fn random_rotation(rng: &mut cga_collide::adversarial::SplitMix64) -> UnitQuaternion<f64> {
+    loop {
+        let q = cga_collide::nalgebra::Quaternion::new(
+            rng.float(-1.0, 1.0),
+            rng.float(-1.0, 1.0),
+            rng.float(-1.0, 1.0),
+            rng.float(-1.0, 1.0),
+        );
+        let n = q.norm();
+        if n > 0.1 && n <= 1.0 {
+            return UnitQuaternion::from_quaternion(q);
+        }
+    }
+}
+
+#[test]
+fn touching_and_near_touching_agree_with_brute_force() {
+    let mut rng = cga_collide::adversarial::SplitMix64(99);
+    let mut scratch = Scratch::new();
+    // Bisect along random directions to the last colliding float and the first free one.
+    for (na, nb) in PAIRS {
+        for _ in 0..6 {
+            let ra = random_rotation(&mut rng);
+            let rb = random_rotation(&mut rng);
+            let dir = loop {
+                let p = rng.point().coords;
+                if p.norm() > 0.3 {
+                    break p.normalize();
+                }
+            };
+            let pa = Isometry3::from_parts(Translation3::identity(), ra);
+            let at = |s: f64| Isometry3::from_parts(Translation3::from(dir * s), rb);
+            let (mut lo, mut hi) = (0.0f64, 2.5f64);
+            assert!(brute(poly(na), &pa, poly(nb), &at(lo)));
+            assert!(!brute(poly(na), &pa, poly(nb), &at(hi)));
+            while hi - lo > f64::EPSILON * hi {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                if brute(poly(na), &pa, poly(nb), &at(mid)) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            for s in [lo, hi] {
+                let want = brute(poly(na), &pa, poly(nb), &at(s));
+                for level in 0..=4 {
+                    for kind in KINDS {
+                        let got = collide_with(
+                            &mut scratch,
+                            tree(na, level, kind),
+                            &pa,
+                            tree(nb, level, kind),
+                            &at(s),
+                        );
+                        assert_eq!(
+                            got.collides, want,
+                            "{na}-{nb} L{level} {kind:?} s={s:e} dir={dir:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn exact_face_contact_and_identical_poses() {
+    let mut rng = cga_collide::adversarial::SplitMix64(3);
+    let s = poly("cube").vertices()[0].x.abs();
+    for level in 0..=4 {
+        for kind in KINDS {
+            let c = tree("cube", level, kind);
+            // Face on face: x = s against x = -s + 2s (exact), lateral dyadic offsets.
+            for k in -40..=40 {
+                let y = k as f64 / 32.0;
+                let pb = Isometry3::translation(2.0 * s, y, 0.0);
+                let got = collide(c, &Isometry3::identity(), c, &pb);
+                assert_eq!(
+                    got.collides,
+                    brute(poly("cube"), &Isometry3::identity(), poly("cube"), &pb)
+                );
+                assert_eq!(got.collides, y.abs() <= 2.0 * s, "y = {y}");
+            }
+            // Identical poses always collide.
+            for (na, _) in PAIRS {
+                let pose = Isometry3::from_parts(
+                    Translation3::new(rng.float(-9., 9.), rng.float(-9., 9.), rng.float(-9., 9.)),
+                    random_rotation(&mut rng),
+                );
+                let t = tree(na, level, kind);
+                assert!(collide(t, &pose, t, &pose).collides);
+            }
+        }
+    }
+}
+
+#[test]
+fn containment_without_surface_contact() {
+    // A small cube well inside Rh (and the reverse order).
+    let small = {
+        let c = poly("cube");
+        ConvexPolyhedron::new(
+            c.vertices()
+                .iter()
+                .map(|v| Point3::from(v.coords * 0.25))
+                .collect(),
+            c.faces().to_vec(),
+        )
+        .unwrap()
+    };
+    let mut rng = cga_collide::adversarial::SplitMix64(8);
+    for level in [0, 3] {
+        for kind in KINDS {
+            let ts = DoubleSphereTree::build(&small, level, kind).unwrap();
+            let trh = tree("rh", level, kind);
+            for _ in 0..50 {
+                let ps = Isometry3::from_parts(
+                    Translation3::new(
+                        rng.float(-0.5, 0.5),
+                        rng.float(-0.5, 0.5),
+                        rng.float(-0.5, 0.5),
+                    ),
+                    random_rotation(&mut rng),
+                );
+                let pr = Isometry3::from_parts(Translation3::identity(), random_rotation(&mut rng));
+                let want = brute(&small, &ps, poly("rh"), &pr);
+                let got = collide(&ts, &ps, trh, &pr);
+                assert_eq!(got.collides, want);
+                let got2 = collide(trh, &pr, &ts, &ps);
+                assert_eq!(got2.collides, want);
+                if want
+                    && got.decided_by != Decision::InnerSpheres
+                    && got.decided_by != Decision::Faces
+                {
+                    assert_eq!(got.decided_by, Decision::Containment);
+                }
+            }
+        }
+    }
+    // A tiny cube inside Rh near its boundary, where no inner sphere reaches it: only the
+    // containment test can see the collision.
+    let tiny = {
+        let c = poly("cube");
+        ConvexPolyhedron::new(
+            c.vertices()
+                .iter()
+                .map(|v| Point3::from(v.coords * 0.02))
+                .collect(),
+            c.faces().to_vec(),
+        )
+        .unwrap()
+    };
+    let mut by_containment = 0;
+    for kind in KINDS {
+        let tt = DoubleSphereTree::build(&tiny, 0, kind).unwrap();
+        let trh = tree("rh", 3, kind);
+        for k in 0..=100 {
+            let z = k as f64 / 100.0;
+            let pt = Isometry3::translation(0.0, 0.0, z);
+            let want = brute(&tiny, &pt, poly("rh"), &Isometry3::identity());
+            let got = collide(&tt, &pt, trh, &Isometry3::identity());
+            assert_eq!(got.collides, want, "z = {z}");
+            let got2 = collide(trh, &Isometry3::identity(), &tt, &pt);
+            assert_eq!(got2.collides, want, "z = {z}");
+            by_containment += usize::from(got.decided_by == Decision::Containment);
+            by_containment += usize::from(got2.decided_by == Decision::Containment);
+        }
+    }
+    assert!(by_containment > 0);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 600, ..ProptestConfig::default() })]
+
+    /// `collide` agrees with the brute force on random poses for the four pairs, levels 0-4,
+    /// both kinds.
+    #[test]
+    fn collide_agrees_with_brute_force(
+        pair in 0usize..4,
+        level in 0usize..=4,
+        kind in 0usize..2,
+        ta in prop::array::uniform3(-3.0f64..3.0),
+        tb in prop::array::uniform3(-3.0f64..3.0),
+        qa in prop::array::uniform4(-1.0f64..1.0),
+        qb in prop::array::uniform4(-1.0f64..1.0),
+    ) {
+        let (na, nb) = PAIRS[pair];
+        let kind = KINDS[kind];
+        let rot = |q: [f64; 4]| {
+            let q = cga_collide::nalgebra::Quaternion::new(q[0], q[1], q[2], q[3]);
+            if q.norm() < 1e-3 { UnitQuaternion::identity() } else { UnitQuaternion::from_quaternion(q) }
+        };
+        // Bring B near A so that about half the cases collide.
+        let pa = Isometry3::from_parts(Translation3::new(ta[0], ta[1], ta[2]), rot(qa));
+        let tb = Vector3::new(ta[0], ta[1], ta[2]) + Vector3::new(tb[0], tb[1], tb[2]) * 0.6;
+        let pb = Isometry3::from_parts(Translation3::from(tb), rot(qb));
+        let got = collide(tree(na, level, kind), &pa, tree(nb, level, kind), &pb);
+        prop_assert_eq!(got.collides, brute(poly(na), &pa, poly(nb), &pb));
+    }
 }

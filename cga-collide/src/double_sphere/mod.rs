@@ -151,11 +151,17 @@ pub struct Node {
     pub internal: bool,
     /// The two children, or `None` for a leaf.
     pub children: Option<[u32; 2]>,
+    /// The split plane `(a, d)` of an inner node: the first child's region is `a·x <= d`, the
+    /// second's `a·x >= d` (`a` the unit principal axis, `d = a·outer centre`).
+    pub split: Option<(Vector3<f64>, f64)>,
     /// Depth (the root is 0).
     pub depth: u32,
     /// Range of this leaf's original triangles in [`DoubleSphereTree::leaf_triangles`] (empty
     /// for inner nodes).
     pub triangles: std::ops::Range<u32>,
+    /// Range of this leaf's face planes in the tree's leaf-plane list: the supporting planes of
+    /// the original faces its triangles belong to (empty for inner nodes).
+    pub planes: std::ops::Range<u32>,
 }
 
 impl Node {
@@ -173,6 +179,7 @@ pub struct DoubleSphereTree {
     nodes: Vec<Node>,
     parts: Vec<SubPolyhedron>,
     leaf_triangles: Vec<u32>,
+    pub(crate) leaf_planes: Vec<(Vector3<f64>, f64)>,
     level: usize,
     kind: InnerSphereKind,
     /// Largest vertex norm (body frame), for the transform error bound.
@@ -190,6 +197,8 @@ struct Builder<'a> {
     nodes: Vec<Node>,
     parts: Vec<SubPolyhedron>,
     leaf_triangles: Vec<u32>,
+    face_planes: Vec<(Vector3<f64>, f64)>,
+    leaf_planes: Vec<(Vector3<f64>, f64)>,
 }
 
 impl Builder<'_> {
@@ -222,8 +231,10 @@ impl Builder<'_> {
             inner,
             internal,
             children: None,
+            split: None,
             depth,
             triangles: 0..0,
+            planes: 0..0,
         });
         self.parts.push(part);
         let mut split = None;
@@ -249,6 +260,7 @@ impl Builder<'_> {
                 let ib = self.node(b, depth + 1, path);
                 path.pop();
                 self.nodes[index as usize].children = Some([ia, ib]);
+                self.nodes[index as usize].split = Some((axis, d));
             }
             None => {
                 let start = self.leaf_triangles.len() as u32;
@@ -259,6 +271,17 @@ impl Builder<'_> {
                     }
                 }
                 self.nodes[index as usize].triangles = start..self.leaf_triangles.len() as u32;
+                let pstart = self.leaf_planes.len() as u32;
+                let mut faces: Vec<usize> = self.leaf_triangles[start as usize..]
+                    .iter()
+                    .map(|&t| self.poly.triangle_faces()[t as usize])
+                    .collect();
+                faces.sort_unstable();
+                faces.dedup();
+                for f in faces {
+                    self.leaf_planes.push(self.face_planes[f]);
+                }
+                self.nodes[index as usize].planes = pstart..self.leaf_planes.len() as u32;
             }
         }
         index
@@ -300,6 +323,20 @@ impl DoubleSphereTree {
             nodes: Vec::new(),
             parts: Vec::new(),
             leaf_triangles: Vec::new(),
+            face_planes: (0..polyhedron.num_faces())
+                .map(|f| {
+                    // Supporting plane: the offset is the largest n·v over ALL vertices plus the
+                    // margin, so the whole solid is certainly on the inner side.
+                    let n = polyhedron.face_normal(f);
+                    let d = polyhedron
+                        .vertices()
+                        .iter()
+                        .map(|v| n.dot(&v.coords))
+                        .fold(f64::NEG_INFINITY, f64::max);
+                    (n, d + BUILD_MARGIN * vmax)
+                })
+                .collect(),
+            leaf_planes: Vec::new(),
         };
         builder.node(
             SubPolyhedron::from_polyhedron(polyhedron),
@@ -311,6 +348,7 @@ impl DoubleSphereTree {
             nodes: builder.nodes,
             parts: builder.parts,
             leaf_triangles: builder.leaf_triangles,
+            leaf_planes: builder.leaf_planes,
             level,
             kind: inner,
             vmax,

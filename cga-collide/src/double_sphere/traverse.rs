@@ -119,6 +119,16 @@ pub struct Scratch {
     a: Cache,
     b: Cache,
     stack: Vec<(u32, u32)>,
+    tris_a: Vec<Gathered>,
+    tris_b: Vec<Gathered>,
+}
+
+/// A transformed triangle with its bounding box, gathered for a leaf pair.
+#[derive(Debug, Clone, Copy)]
+struct Gathered {
+    tri: Triangle,
+    lo: [f64; 3],
+    hi: [f64; 3],
 }
 
 impl Scratch {
@@ -201,21 +211,6 @@ fn certainly_meet(d2: f64, ra: f64, rb: f64) -> bool {
     d2 * (1.0 + 1e-14) + 1e-300 < s * s
 }
 
-#[inline]
-fn boxes_apart(p: &[[f64; 3]; 3], q: &[[f64; 3]; 3]) -> bool {
-    (0..3).any(|k| {
-        let (pmin, pmax) = (
-            p[0][k].min(p[1][k]).min(p[2][k]),
-            p[0][k].max(p[1][k]).max(p[2][k]),
-        );
-        let (qmin, qmax) = (
-            q[0][k].min(q[1][k]).min(q[2][k]),
-            q[0][k].max(q[1][k]).max(q[2][k]),
-        );
-        pmax < qmin || qmax < pmin
-    })
-}
-
 fn tri(p: &[[f64; 3]; 3]) -> Option<Triangle> {
     let pt = |a: &[f64; 3]| Point3::new(a[0], a[1], a[2]);
     Triangle::new(pt(&p[0]), pt(&p[1]), pt(&p[2])).ok()
@@ -267,8 +262,7 @@ pub fn collide_with(
         cache: &mut scratch.b,
         stamp,
     };
-    let stack = &mut scratch.stack;
-    stack.clear();
+    scratch.stack.clear();
     let mut out = Outcome {
         collides: false,
         decided_by: Decision::OuterSpheres,
@@ -280,8 +274,8 @@ pub fn collide_with(
         return out;
     }
     let mut roots_meet = false;
-    stack.push((0, 0));
-    while let Some((i, j)) = stack.pop() {
+    scratch.stack.push((0, 0));
+    while let Some((i, j)) = scratch.stack.pop() {
         let (i, j) = (i as usize, j as usize);
         sa.fill(i);
         sb.fill(j);
@@ -319,40 +313,46 @@ pub fn collide_with(
             out.decided_by = Decision::InnerSpheres;
             return out;
         }
+        let (ca, cb) = (sa.cache.outer[i], sb.cache.outer[j]);
+        let (i32_, j32) = (i as u32, j as u32);
         match (na.internal, nb.internal, na.children, nb.children) {
             // Internal regions hold no surface: only acceptance can come from below.
             (true, true, _, _) => {}
-            (true, false, _, Some([c0, c1])) => {
-                stack.push((i as u32, c1));
-                stack.push((i as u32, c0));
+            (true, false, _, Some(c)) | (false, false, None, Some(c)) => {
+                let [near, far] = nearer_first(&mut sb, c, &ca);
+                scratch.stack.push((i32_, far));
+                scratch.stack.push((i32_, near));
             }
-            (false, true, Some([c0, c1]), _) => {
-                stack.push((c1, j as u32));
-                stack.push((c0, j as u32));
+            (false, true, Some(c), _) | (false, false, Some(c), None) => {
+                let [near, far] = nearer_first(&mut sa, c, &cb);
+                scratch.stack.push((far, j32));
+                scratch.stack.push((near, j32));
             }
             (true, false, _, None) | (false, true, None, _) => {}
             (false, false, None, None) => {
-                if leaf_faces(&mut sa, i, &mut sb, j, &mut out) {
+                if leaf_faces(
+                    &mut sa,
+                    i,
+                    &mut sb,
+                    j,
+                    &mut out,
+                    &mut scratch.tris_a,
+                    &mut scratch.tris_b,
+                ) {
                     out.collides = true;
                     out.decided_by = Decision::Faces;
                     return out;
                 }
             }
-            (false, false, Some([c0, c1]), None) => {
-                stack.push((c1, j as u32));
-                stack.push((c0, j as u32));
-            }
-            (false, false, None, Some([c0, c1])) => {
-                stack.push((i as u32, c1));
-                stack.push((i as u32, c0));
-            }
-            (false, false, Some([a0, a1]), Some([b0, b1])) => {
+            (false, false, Some(a2), Some(b2)) => {
                 if na.outer.radius >= nb.outer.radius {
-                    stack.push((a1, j as u32));
-                    stack.push((a0, j as u32));
+                    let [near, far] = nearer_first(&mut sa, a2, &cb);
+                    scratch.stack.push((far, j32));
+                    scratch.stack.push((near, j32));
                 } else {
-                    stack.push((i as u32, b1));
-                    stack.push((i as u32, b0));
+                    let [near, far] = nearer_first(&mut sb, b2, &ca);
+                    scratch.stack.push((i32_, far));
+                    scratch.stack.push((i32_, near));
                 }
             }
         }
@@ -371,22 +371,116 @@ pub fn collide_with(
     out
 }
 
-/// Algorithm 2 on the original triangles of two leaves.
-fn leaf_faces(sa: &mut Side, i: usize, sb: &mut Side, j: usize, out: &mut Outcome) -> bool {
-    let ra = sa.tree.nodes[i].triangles.clone();
-    let rb = sb.tree.nodes[j].triangles.clone();
-    for ta in ra {
-        let p = sa.triangle(sa.tree.leaf_triangles[ta as usize]);
-        for tb in rb.clone() {
-            let q = sb.triangle(sb.tree.leaf_triangles[tb as usize]);
-            if boxes_apart(&p, &q) {
+/// The triangles of leaf `i` of `side` that may meet the ball `(c, r)` (their bounding box
+/// is not certainly farther than `r` from `c`), transformed, with their boxes.
+fn gather(side: &mut Side, i: usize, c: &[f64; 3], r: f64, buf: &mut Vec<Gathered>) {
+    buf.clear();
+    let range = side.tree.nodes[i].triangles.clone();
+    let r2 = r * r * (1.0 + 1e-14) + 1e-300;
+    for k in range {
+        let p = side.triangle(side.tree.leaf_triangles[k as usize]);
+        let lo = [
+            p[0][0].min(p[1][0]).min(p[2][0]),
+            p[0][1].min(p[1][1]).min(p[2][1]),
+            p[0][2].min(p[1][2]).min(p[2][2]),
+        ];
+        let hi = [
+            p[0][0].max(p[1][0]).max(p[2][0]),
+            p[0][1].max(p[1][1]).max(p[2][1]),
+            p[0][2].max(p[1][2]).max(p[2][2]),
+        ];
+        let mut d2 = 0.0;
+        for k in 0..3 {
+            let e = (lo[k] - c[k]).max(c[k] - hi[k]).max(0.0);
+            d2 += e * e;
+        }
+        if d2 > r2 {
+            continue;
+        }
+        if let Some(tri) = tri(&p) {
+            buf.push(Gathered { tri, lo, hi });
+        }
+    }
+}
+
+/// The inverse-transform rounding bound for a world point `p` (module docs: `|p| + |τ|` in
+/// the role of `|v|`).
+fn inverse_error_bound(pose: &Isometry3<f64>, p: &Point3<f64>) -> f64 {
+    let q = pose.rotation.quaternion();
+    let eta = (q.norm_squared() - 1.0).abs() + 1e-15;
+    let reach = p.coords.norm() + pose.translation.vector.norm();
+    ((2.0 * eta + 1e-14) * reach * 1.01 + 1e-290) * 1.01
+}
+
+/// Whether the world ball `(c, r)` lies certainly outside one of the supporting planes of the
+/// original faces of leaf `i` of `side`: then no point of it is in that solid, and the leaf
+/// pair holds no contact (ours, before Algorithm 2; it only skips face tests that cannot
+/// succeed).
+fn beyond_leaf_faces(side: &Side, i: usize, c: &[f64; 3], r: f64) -> bool {
+    let range = side.tree.nodes[i].planes.clone();
+    if range.is_empty() {
+        return false;
+    }
+    let cw = Point3::new(c[0], c[1], c[2]);
+    let body = side.pose.inverse_transform_point(&cw);
+    let reach = r + side.eps + inverse_error_bound(side.pose, &cw);
+    side.tree.leaf_planes[range.start as usize..range.end as usize]
+        .iter()
+        .any(|(n, d)| n.dot(&body.coords) - d > reach * (1.0 + 1e-12) + 1e-12 * side.tree.vmax)
+}
+
+/// The two children ordered by the distance of their outer centres to `other` (nearer first:
+/// it is explored first, which finds contacts sooner).
+#[inline]
+fn nearer_first(side: &mut Side, c: [u32; 2], other: &[f64; 3]) -> [u32; 2] {
+    side.fill(c[0] as usize);
+    side.fill(c[1] as usize);
+    let d0 = dist2(&side.cache.outer[c[0] as usize], other);
+    let d1 = dist2(&side.cache.outer[c[1] as usize], other);
+    if d1 < d0 {
+        [c[1], c[0]]
+    } else {
+        c
+    }
+}
+
+/// Algorithm 2 on the original triangles of two leaves: every pair of their triangles that
+/// can meet (each triangle's box reaches the other leaf's inflated outer sphere, and the two
+/// boxes overlap; both filters are exact comparisons or certified) is tested exactly.
+#[allow(clippy::too_many_arguments)]
+fn leaf_faces(
+    sa: &mut Side,
+    i: usize,
+    sb: &mut Side,
+    j: usize,
+    out: &mut Outcome,
+    bufa: &mut Vec<Gathered>,
+    bufb: &mut Vec<Gathered>,
+) -> bool {
+    let (ca, ra) = (
+        sa.cache.outer[i],
+        sa.tree.nodes[i].outer.radius + 2.0 * sa.eps,
+    );
+    let (cb, rb) = (
+        sb.cache.outer[j],
+        sb.tree.nodes[j].outer.radius + 2.0 * sb.eps,
+    );
+    if beyond_leaf_faces(sa, i, &cb, rb) || beyond_leaf_faces(sb, j, &ca, ra) {
+        return false;
+    }
+    gather(sa, i, &cb, rb, bufa);
+    if bufa.is_empty() {
+        return false;
+    }
+    gather(sb, j, &ca, ra, bufb);
+    for x in bufa.iter() {
+        for y in bufb.iter() {
+            if (0..3).any(|k| x.hi[k] < y.lo[k] || y.hi[k] < x.lo[k]) {
                 continue;
             }
             out.triangle_tests += 1;
-            if let (Some(x), Some(y)) = (tri(&p), tri(&q)) {
-                if x.intersects(&y) {
-                    return true;
-                }
+            if x.tri.intersects(&y.tri) {
+                return true;
             }
         }
     }
@@ -397,10 +491,7 @@ fn leaf_faces(sa: &mut Side, i: usize, sb: &mut Side, j: usize, out: &mut Outcom
 fn contains_point(side: &mut Side, p: &[f64; 3]) -> bool {
     let pw = Point3::new(p[0], p[1], p[2]);
     let body = side.pose.inverse_transform_point(&pw);
-    let q = side.pose.rotation.quaternion();
-    let eta = (q.norm_squared() - 1.0).abs() + 1e-15;
-    let reach = pw.coords.norm() + side.pose.translation.vector.norm();
-    let eps_inv = ((2.0 * eta + 1e-14) * reach + 1e-290) * 1.01;
+    let eps_inv = inverse_error_bound(side.pose, &pw);
     let margin = side.eps + eps_inv + super::BUILD_MARGIN * side.tree.vmax;
     let s = side
         .tree
