@@ -18,6 +18,7 @@ pub mod convex;
 pub mod double_sphere;
 pub mod error;
 pub mod euclid;
+pub mod experiment;
 pub mod filter;
 pub mod intersect;
 pub mod oracle;

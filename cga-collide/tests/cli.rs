@@ -300,3 +300,67 @@ fn spheretree_build_then_collide() {
     let out = cga(&["spheretree", "collide", "cut.txt", "--lenient"], &dir);
     assert!(String::from_utf8_lossy(&out.stderr).contains("warning: tree 1 node at line 2"));
 }
+
+#[test]
+fn double_sphere_experiment_runs_small_and_checks_every_answer() {
+    let dir = temp_dir("experiment");
+    let out = cga(
+        &[
+            "experiment",
+            "double-spheres",
+            "--placements",
+            "400",
+            "--calibration-samples",
+            "400",
+            "--levels",
+            "1",
+            "--inner",
+            "both",
+            "--csv",
+            "runs.csv",
+            "--plot",
+            "runs.svg",
+            "--json",
+        ],
+        &dir,
+    );
+    let v = json(&out);
+    assert_eq!(v["mismatches"], 0);
+    let cells = v["cells"].as_array().unwrap();
+    // The paper's four pairs at its two sizes.
+    assert_eq!(cells.len(), 8);
+    for c in cells {
+        let collisions = c["reference_collisions"].as_u64().unwrap();
+        // Calibrated to about 25 % or 75 % of 400 (wide margins: 400 calibration samples).
+        let target = c["target"].as_f64().unwrap();
+        let fraction = collisions as f64 / 400.0;
+        assert!((fraction - target).abs() < 0.15, "{fraction} vs {target}");
+        let variants = c["variants"].as_array().unwrap();
+        assert_eq!(variants.len(), 4, "levels 3 and 1, two inner kinds");
+        for var in variants {
+            let by = var["by_inner"].as_u64().unwrap() + var["by_faces"].as_u64().unwrap();
+            assert_eq!(
+                by, collisions,
+                "every collision is decided by spheres or faces"
+            );
+        }
+    }
+    let csv = std::fs::read_to_string(dir.join("runs.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 8 * 4);
+    let svg = std::fs::read_to_string(dir.join("runs.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("<rect"));
+
+    let bad = cga(
+        &[
+            "experiment",
+            "double-spheres",
+            "--pairs",
+            "cube:dodecahedron",
+        ],
+        &dir,
+    );
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("dodecahedron"));
+    let bad = cga(&["experiment", "double-spheres", "--collide", "1.5"], &dir);
+    assert!(!bad.status.success());
+}

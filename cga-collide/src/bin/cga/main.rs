@@ -3,6 +3,7 @@
 //! `cga` with no arguments runs `cga collide` on built-in meshes (bunny00 vs a moved
 //! armadillo) and writes `collision.png`. See `cga --help`.
 
+mod experiment;
 mod render;
 mod spheretree;
 
@@ -37,6 +38,8 @@ enum Command {
     Query(QueryArgs),
     /// Octree sphere trees (seed paper 003): build from meshes, collide two from a file.
     Spheretree(spheretree::SphereTreeArgs),
+    /// Run an experiment of the papers (`cga experiment double-spheres`).
+    Experiment(experiment::ExperimentArgs),
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -145,6 +148,7 @@ fn main() -> ExitCode {
         Some(Command::Collide(args)) => collide(args),
         Some(Command::Query(args)) => query(args),
         Some(Command::Spheretree(args)) => spheretree::run(args),
+        Some(Command::Experiment(args)) => experiment::experiment(args),
         None => collide(CollideArgs {
             a: None,
             b: None,
