@@ -22,6 +22,7 @@ pub mod experiment;
 pub mod filter;
 pub mod intersect;
 pub mod oracle;
+pub mod plot;
 pub mod polyhedron;
 pub mod predicates;
 pub mod query;
