@@ -417,9 +417,11 @@ impl SphereTree {
     }
 
     /// The tree moved by a rigid motion: every centre is mapped in `f64`, radii are kept and
-    /// then raised by a margin covering the rounding of the rotated centres (a few units in the
-    /// last place of the largest coordinate involved), so the union of the leaf balls still
-    /// contains the moved cells.
+    /// then raised by a margin of `16·2^-52·(|c|∞ + |t|∞ + r)` (rounded up), meant to cover the
+    /// rounding of the rotated centre and of the mesh vertices that
+    /// [`TriMesh::transformed`](crate::mesh::TriMesh::transformed) moves the same way, so that
+    /// the union of the leaf balls still contains the moved solid. This margin is a generous
+    /// estimate of those `f64` errors, not a proof (the ball–ball tests themselves are exact).
     pub fn transformed(&self, iso: &Isometry3<f64>) -> SphereTree {
         let t = iso.translation.vector.abs().max();
         let nodes = self
@@ -439,8 +441,8 @@ impl SphereTree {
         SphereTree { nodes }
     }
 
-    /// The tree translated by `v` (each centre moved in `f64`; radii raised by one unit in the
-    /// last place of the moved centres to cover that rounding).
+    /// The tree translated by `v` ([`transformed`](Self::transformed) by a pure translation:
+    /// centres moved in `f64`, radii raised by the same rounding margin).
     pub fn translated(&self, v: [f64; 3]) -> SphereTree {
         self.transformed(&Isometry3::translation(v[0], v[1], v[2]))
     }
