@@ -4,6 +4,8 @@
 //!
 //! `cargo bench -p cga-collide --bench double_sphere -- --warm-up-time 1 --measurement-time 3`
 //!
+//! The second group times `DoubleSphereTree::build` at level 3 for the five solids.
+//!
 //! Each iteration runs a fixed batch of placements (`N` for the trees and GJK, `N_BRUTE` for the
 //! brute force): divide the reported time by the batch size (the throughput line gives
 //! queries per second). Placements: B's centre uniform in a ball of radius 2 around A's
@@ -128,6 +130,18 @@ fn bench(c: &mut Criterion) {
             })
         });
         black_box(&poses);
+    }
+    group.finish();
+
+    // Build time of the level-3 trees.
+    let mut group = c.benchmark_group("double_sphere_build_level3");
+    for name in ConvexPolyhedron::NAMES {
+        let p = ConvexPolyhedron::by_name(name).unwrap();
+        for kind in [InnerSphereKind::Centroid, InnerSphereKind::Chebyshev] {
+            group.bench_function(BenchmarkId::new(format!("{kind:?}"), name), |bench| {
+                bench.iter(|| DoubleSphereTree::build(black_box(&p), 3, kind).unwrap())
+            });
+        }
     }
     group.finish();
 }

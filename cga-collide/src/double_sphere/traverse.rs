@@ -59,7 +59,7 @@ use crate::{Intersects, Triangle};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Decision {
     /// No collision: every pair of nodes visited was rejected by the outer spheres (or held no
-    /// surface), no face test was needed.
+    /// surface), no pair of external leaves reached Algorithm 2.
     OuterSpheres,
     /// Collision: two internal nodes' outer spheres meet.
     InternalLabels,
@@ -69,7 +69,8 @@ pub enum Decision {
     Faces,
     /// Collision: one solid lies inside the other without surface contact.
     Containment,
-    /// No collision, after face tests.
+    /// No collision: some pair of external leaves reached Algorithm 2 (whose triangle pairs
+    /// may all have been skipped by the exact prefilters) and no contact was found.
     NoContact,
 }
 
@@ -90,6 +91,7 @@ pub struct Outcome {
 #[derive(Debug, Clone, Default)]
 struct Cache {
     node_stamp: Vec<u32>,
+    inner_stamp: Vec<u32>,
     outer: Vec<[f64; 3]>,
     inner: Vec<[f64; 3]>,
     vert_stamp: Vec<u32>,
@@ -101,6 +103,7 @@ impl Cache {
         let n = tree.nodes.len();
         if self.node_stamp.len() < n {
             self.node_stamp.resize(n, 0);
+            self.inner_stamp.resize(n, 0);
             self.outer.resize(n, [0.0; 3]);
             self.inner.resize(n, [0.0; 3]);
         }
@@ -166,9 +169,21 @@ impl Side<'_> {
         if self.cache.node_stamp[i] != self.stamp {
             let n = &self.tree.nodes[i];
             self.cache.outer[i] = arr(&(self.pose * n.outer.centre));
-            self.cache.inner[i] = arr(&(self.pose * n.inner.centre));
             self.cache.node_stamp[i] = self.stamp;
         }
+    }
+    #[inline]
+    fn inner(&mut self, i: usize) -> [f64; 3] {
+        if self.cache.inner_stamp[i] != self.stamp {
+            let n = &self.tree.nodes[i];
+            self.cache.inner[i] = if n.inner.centre == n.outer.centre {
+                self.cache.outer[i]
+            } else {
+                arr(&(self.pose * n.inner.centre))
+            };
+            self.cache.inner_stamp[i] = self.stamp;
+        }
+        self.cache.inner[i]
     }
     #[inline]
     fn vertex(&mut self, i: usize) -> [f64; 3] {
@@ -216,15 +231,23 @@ fn tri(p: &[[f64; 3]; 3]) -> Option<Triangle> {
     Triangle::new(pt(&p[0]), pt(&p[1]), pt(&p[2])).ok()
 }
 
-/// Whether the two solids collide (see the module docs); allocates fresh buffers, see
-/// [`collide_with`] to reuse them.
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::new());
+}
+
+/// Whether the two solids collide (see the module docs). Uses a per-thread [`Scratch`], so
+/// repeated queries do not allocate; [`collide_with`] takes explicit buffers.
 pub fn collide(
     a: &DoubleSphereTree,
     pose_a: &Isometry3<f64>,
     b: &DoubleSphereTree,
     pose_b: &Isometry3<f64>,
 ) -> Outcome {
-    collide_with(&mut Scratch::new(), a, pose_a, b, pose_b)
+    SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut scratch) => collide_with(&mut scratch, a, pose_a, b, pose_b),
+        // Re-entered on this thread (not possible through this module): fresh buffers.
+        Err(_) => collide_with(&mut Scratch::new(), a, pose_a, b, pose_b),
+    })
 }
 
 /// [`collide`] with reusable buffers: after the first query with trees of a given size, no
@@ -240,6 +263,8 @@ pub fn collide_with(
     if scratch.stamp == 0 {
         // Wrapped: invalidate everything.
         scratch.a.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.a.inner_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.b.inner_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.a.vert_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.b.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.b.vert_stamp.iter_mut().for_each(|s| *s = u32::MAX);
@@ -274,6 +299,7 @@ pub fn collide_with(
         return out;
     }
     let mut roots_meet = false;
+    let mut reached_faces = false;
     scratch.stack.push((0, 0));
     while let Some((i, j)) = scratch.stack.pop() {
         let (i, j) = (i as usize, j as usize);
@@ -305,7 +331,7 @@ pub fn collide_with(
         }
         out.sphere_tests += 1;
         if certainly_meet(
-            dist2(&sa.cache.inner[i], &sb.cache.inner[j]),
+            dist2(&sa.inner(i), &sb.inner(j)),
             na.inner.radius - 3.0 * sa.eps,
             nb.inner.radius - 3.0 * sb.eps,
         ) {
@@ -330,6 +356,7 @@ pub fn collide_with(
             }
             (true, false, _, None) | (false, true, None, _) => {}
             (false, false, None, None) => {
+                reached_faces = true;
                 if leaf_faces(
                     &mut sa,
                     i,
@@ -357,7 +384,7 @@ pub fn collide_with(
             }
         }
     }
-    if out.triangle_tests > 0 {
+    if reached_faces {
         out.decided_by = Decision::NoContact;
     }
     if roots_meet {
