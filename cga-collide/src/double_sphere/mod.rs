@@ -50,6 +50,12 @@
 //!   rounding of the pose transform, and sphere comparisons with an error bound (never an
 //!   uncertain acceptance or rejection);
 //! * the leaves test the original, unclipped triangles (exact, and nothing is lost at cuts);
+//! * two exact prefilters before Algorithm 2 at a leaf pair, which only skip triangle pairs
+//!   that cannot meet (so they change no decision, only the work): the leaf pair is dropped
+//!   when one leaf's inflated outer sphere is certainly beyond a supporting plane of an
+//!   original face of the other leaf, and a triangle is skipped when its bounding box is
+//!   certainly farther than the other leaf's inflated outer sphere or does not overlap the
+//!   other triangle's box; each leaf's triangles are transformed at most once per query;
 //! * after a descent without contact, an exact containment test (one solid inside the other
 //!   without touching it, which Algorithm 1 alone reports as "no contact");
 //! * where the paper's pseudocode descends both trees in two calls when both nodes are inner

@@ -90,6 +90,10 @@ pub struct Outcome {
 /// Per-tree cache of transformed centres and vertices for one query.
 #[derive(Debug, Clone, Default)]
 struct Cache {
+    /// Per node: the query that last gathered this leaf's triangles into `gathered`.
+    leaf_stamp: Vec<u32>,
+    /// Transformed leaf triangles, indexed like the tree's leaf-triangle list.
+    gathered: Vec<Gathered>,
     node_stamp: Vec<u32>,
     inner_stamp: Vec<u32>,
     outer: Vec<[f64; 3]>,
@@ -103,9 +107,21 @@ impl Cache {
         let n = tree.nodes.len();
         if self.node_stamp.len() < n {
             self.node_stamp.resize(n, 0);
+            self.leaf_stamp.resize(n, 0);
             self.inner_stamp.resize(n, 0);
             self.outer.resize(n, [0.0; 3]);
             self.inner.resize(n, [0.0; 3]);
+        }
+        let g = tree.leaf_triangles.len();
+        if self.gathered.len() < g {
+            self.gathered.resize(
+                g,
+                Gathered {
+                    tri: None,
+                    lo: [0.0; 3],
+                    hi: [0.0; 3],
+                },
+            );
         }
         let v = tree.polyhedron.num_vertices();
         if self.vert_stamp.len() < v {
@@ -122,14 +138,15 @@ pub struct Scratch {
     a: Cache,
     b: Cache,
     stack: Vec<(u32, u32)>,
-    tris_a: Vec<Gathered>,
-    tris_b: Vec<Gathered>,
+    tris_a: Vec<u32>,
+    tris_b: Vec<u32>,
 }
 
-/// A transformed triangle with its bounding box, gathered for a leaf pair.
+/// A transformed triangle with its bounding box (`None` triangle: a non-finite coordinate,
+/// which denotes no point).
 #[derive(Debug, Clone, Copy)]
 struct Gathered {
-    tri: Triangle,
+    tri: Option<Triangle>,
     lo: [f64; 3],
     hi: [f64; 3],
 }
@@ -264,6 +281,8 @@ pub fn collide_with(
         // Wrapped: invalidate everything.
         scratch.a.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.a.inner_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.a.leaf_stamp.iter_mut().for_each(|s| *s = u32::MAX);
+        scratch.b.leaf_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.b.inner_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.a.vert_stamp.iter_mut().for_each(|s| *s = u32::MAX);
         scratch.b.node_stamp.iter_mut().for_each(|s| *s = u32::MAX);
@@ -399,33 +418,45 @@ pub fn collide_with(
 }
 
 /// The triangles of leaf `i` of `side` that may meet the ball `(c, r)` (their bounding box
-/// is not certainly farther than `r` from `c`), transformed, with their boxes.
-fn gather(side: &mut Side, i: usize, c: &[f64; 3], r: f64, buf: &mut Vec<Gathered>) {
+/// is not certainly farther than `r` from `c`), as indices into the cache's transformed
+/// triangles (each leaf is transformed at most once per query).
+fn gather(side: &mut Side, i: usize, c: &[f64; 3], r: f64, buf: &mut Vec<u32>) {
     buf.clear();
     let range = side.tree.nodes[i].triangles.clone();
+    if side.cache.leaf_stamp[i] != side.stamp {
+        for k in range.clone() {
+            let p = side.triangle(side.tree.leaf_triangles[k as usize]);
+            let lo = [
+                p[0][0].min(p[1][0]).min(p[2][0]),
+                p[0][1].min(p[1][1]).min(p[2][1]),
+                p[0][2].min(p[1][2]).min(p[2][2]),
+            ];
+            let hi = [
+                p[0][0].max(p[1][0]).max(p[2][0]),
+                p[0][1].max(p[1][1]).max(p[2][1]),
+                p[0][2].max(p[1][2]).max(p[2][2]),
+            ];
+            side.cache.gathered[k as usize] = Gathered {
+                tri: tri(&p),
+                lo,
+                hi,
+            };
+        }
+        side.cache.leaf_stamp[i] = side.stamp;
+    }
     let r2 = r * r * (1.0 + 1e-14) + 1e-300;
     for k in range {
-        let p = side.triangle(side.tree.leaf_triangles[k as usize]);
-        let lo = [
-            p[0][0].min(p[1][0]).min(p[2][0]),
-            p[0][1].min(p[1][1]).min(p[2][1]),
-            p[0][2].min(p[1][2]).min(p[2][2]),
-        ];
-        let hi = [
-            p[0][0].max(p[1][0]).max(p[2][0]),
-            p[0][1].max(p[1][1]).max(p[2][1]),
-            p[0][2].max(p[1][2]).max(p[2][2]),
-        ];
-        let mut d2 = 0.0;
-        for k in 0..3 {
-            let e = (lo[k] - c[k]).max(c[k] - hi[k]).max(0.0);
-            d2 += e * e;
-        }
-        if d2 > r2 {
+        let g = &side.cache.gathered[k as usize];
+        if g.tri.is_none() {
             continue;
         }
-        if let Some(tri) = tri(&p) {
-            buf.push(Gathered { tri, lo, hi });
+        let mut d2 = 0.0;
+        for a in 0..3 {
+            let e = (g.lo[a] - c[a]).max(c[a] - g.hi[a]).max(0.0);
+            d2 += e * e;
+        }
+        if d2 <= r2 {
+            buf.push(k);
         }
     }
 }
@@ -481,8 +512,8 @@ fn leaf_faces(
     sb: &mut Side,
     j: usize,
     out: &mut Outcome,
-    bufa: &mut Vec<Gathered>,
-    bufb: &mut Vec<Gathered>,
+    bufa: &mut Vec<u32>,
+    bufb: &mut Vec<u32>,
 ) -> bool {
     let (ca, ra) = (
         sa.cache.outer[i],
@@ -500,14 +531,18 @@ fn leaf_faces(
         return false;
     }
     gather(sb, j, &ca, ra, bufb);
-    for x in bufa.iter() {
-        for y in bufb.iter() {
+    for &kx in bufa.iter() {
+        let x = &sa.cache.gathered[kx as usize];
+        for &ky in bufb.iter() {
+            let y = &sb.cache.gathered[ky as usize];
             if (0..3).any(|k| x.hi[k] < y.lo[k] || y.hi[k] < x.lo[k]) {
                 continue;
             }
             out.triangle_tests += 1;
-            if x.tri.intersects(&y.tri) {
-                return true;
+            if let (Some(p), Some(q)) = (&x.tri, &y.tri) {
+                if p.intersects(q) {
+                    return true;
+                }
             }
         }
     }
