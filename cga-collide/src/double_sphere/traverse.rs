@@ -450,11 +450,12 @@ fn gather(side: &mut Side, i: usize, c: &[f64; 3], r: f64, buf: &mut Vec<u32>) {
         if g.tri.is_none() {
             continue;
         }
-        let mut d2 = 0.0;
-        for a in 0..3 {
-            let e = (g.lo[a] - c[a]).max(c[a] - g.hi[a]).max(0.0);
-            d2 += e * e;
-        }
+        let d2: f64 = (0..3)
+            .map(|a| {
+                let e = (g.lo[a] - c[a]).max(c[a] - g.hi[a]).max(0.0);
+                e * e
+            })
+            .sum();
         if d2 <= r2 {
             buf.push(k);
         }
