@@ -492,20 +492,10 @@ impl ExactPlane {
 
     #[inline(always)]
     fn side_with(&self, q: &[f64; 3]) -> Ordering {
-        let w = sub(q, &self.p[0]);
-        let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
-        let aw = [w[0].abs(), w[1].abs(), w[2].abs()];
-        let perm = aw[0] * self.m[0] + aw[1] * self.m[1] + aw[2] * self.m[2];
-        let bound = ORIENT_BOUND * perm + UNDERFLOW * (1.0 + (aw[0] + aw[1] + aw[2]));
-        if perm <= PERM_MAX {
-            if det > bound {
-                return Ordering::Greater;
-            }
-            if det < -bound {
-                return Ordering::Less;
-            }
+        match self.filtered_side(q) {
+            Some(side) => side,
+            None => self.exact_side(q),
         }
-        self.exact_side(q)
     }
 
     #[cold]
