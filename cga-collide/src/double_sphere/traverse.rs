@@ -58,8 +58,9 @@ use crate::{Intersects, Triangle};
 /// How [`collide`] reached its answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Decision {
-    /// No collision: every pair of nodes visited was rejected by the outer spheres (or held no
-    /// surface), no pair of external leaves reached Algorithm 2.
+    /// No collision: every pair of nodes visited was rejected by the outer spheres (or by our
+    /// supporting-face-plane test, or held no surface); no pair of external leaves reached
+    /// Algorithm 2.
     OuterSpheres,
     /// Collision: two internal nodes' outer spheres meet.
     InternalLabels,
@@ -359,6 +360,14 @@ pub fn collide_with(
             return out;
         }
         let (ca, cb) = (sa.cache.outer[i], sb.cache.outer[j]);
+        // Ours: a node whose inflated outer sphere is certainly beyond a supporting face plane
+        // of the other solid holds no point of it, so no pair below can meet (neither by
+        // faces nor by inner spheres inside these regions): the pair is dropped.
+        if beyond_faces(&sa, i, &cb, nb.outer.radius + 2.0 * sb.eps)
+            || beyond_faces(&sb, j, &ca, na.outer.radius + 2.0 * sa.eps)
+        {
+            continue;
+        }
         let (i32_, j32) = (i as u32, j as u32);
         match (na.internal, nb.internal, na.children, nb.children) {
             // Internal regions hold no surface: only acceptance can come from below.
@@ -472,10 +481,9 @@ fn inverse_error_bound(pose: &Isometry3<f64>, p: &Point3<f64>) -> f64 {
 }
 
 /// Whether the world ball `(c, r)` lies certainly outside one of the supporting planes of the
-/// original faces of leaf `i` of `side`: then no point of it is in that solid, and the leaf
-/// pair holds no contact (ours, before Algorithm 2; it only skips face tests that cannot
-/// succeed).
-fn beyond_leaf_faces(side: &Side, i: usize, c: &[f64; 3], r: f64) -> bool {
+/// original faces of node `i` of `side` (every face plane supports the whole convex solid):
+/// then no point of the ball is in that solid.
+fn beyond_faces(side: &Side, i: usize, c: &[f64; 3], r: f64) -> bool {
     let range = side.tree.nodes[i].planes.clone();
     if range.is_empty() {
         return false;
@@ -524,9 +532,6 @@ fn leaf_faces(
         sb.cache.outer[j],
         sb.tree.nodes[j].outer.radius + 2.0 * sb.eps,
     );
-    if beyond_leaf_faces(sa, i, &cb, rb) || beyond_leaf_faces(sb, j, &ca, ra) {
-        return false;
-    }
     gather(sa, i, &cb, rb, bufa);
     if bufa.is_empty() {
         return false;
