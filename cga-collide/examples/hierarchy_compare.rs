@@ -184,7 +184,7 @@ fn main() {
                 }
             }
             let pair = format!("{} – {}", short(a_name), short(b_name));
-            groups.push(format!("{pair} {size}"));
+            groups.push(format!("{pair}\n{size}"));
             for (k, m) in methods.iter().enumerate() {
                 let us = m.score.nanos as f64 / placements as f64 / 1e3;
                 println!(

@@ -19,7 +19,7 @@ use std::fmt::Write as _;
 pub struct BarChart {
     /// The title above the chart.
     pub title: String,
-    /// The group labels.
+    /// The group labels (a `\n` starts a new line).
     pub groups: Vec<String>,
     /// `(name, one value per group)`; non-finite values are left out.
     pub series: Vec<(String, Vec<f64>)>,
@@ -107,15 +107,19 @@ fn bar_chart(
                 v
             );
         }
-        let _ = writeln!(
-            s,
-            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"10\">{}</text>",
-            gx + group_w / 2.0 - 6.0,
-            base + 14.0,
-            escape(name)
-        );
+        // A label may hold line breaks (`\n`): one text line each.
+        let x = gx + group_w / 2.0 - 6.0;
+        for (k, line) in name.lines().enumerate() {
+            let _ = writeln!(
+                s,
+                "<text x=\"{x:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"10\">{}</text>",
+                base + 14.0 + 12.0 * k as f64,
+                escape(line)
+            );
+        }
     }
-    let mut ly = base + 34.0;
+    let label_lines = groups.iter().map(|g| g.lines().count()).max().unwrap_or(1) as f64;
+    let mut ly = base + 22.0 + 12.0 * label_lines;
     let mut lx = left;
     for (k, (label, _)) in series.iter().enumerate() {
         if lx > W - 200.0 {

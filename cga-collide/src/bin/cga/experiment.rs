@@ -557,7 +557,7 @@ fn nan_null(x: f64) -> serde_json::Value {
 fn plot(cells: &[Cell], specs: &[VariantSpec]) -> String {
     let groups: Vec<String> = cells
         .iter()
-        .map(|c| format!("{} {}", pair_label(c), size_label(c)))
+        .map(|c| format!("{}\n{}", pair_label(c), size_label(c)))
         .collect();
     let mut share_series: Vec<(String, Vec<f64>)> = vec![(
         "paper".into(),
