@@ -8,43 +8,21 @@
 //!
 //! Each iteration runs a fixed batch of placements (`N` for the trees and GJK, `N_BRUTE` for the
 //! brute force): divide the reported time by the batch size (the throughput line gives
-//! queries per second). Placements: B's centre uniform in a ball of radius 2 around A's
-//! (45–85 % collide depending on the pair), both orientations uniform (random unit quaternions).
+//! queries per second). Placements: the experiment's (`experiment::placement`, seed 2009): both
+//! centres uniform in an experiment sphere of radius 2, both orientations uniform (Arvo).
 
 use std::hint::black_box;
 
-use cga_collide::adversarial::SplitMix64;
 use cga_collide::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::double_sphere::{collide_with, DoubleSphereTree, InnerSphereKind, Scratch};
-use cga_collide::nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion};
+use cga_collide::experiment::placement;
+use cga_collide::nalgebra::{Isometry3, Point3};
 use cga_collide::polyhedron::ConvexPolyhedron;
 use cga_collide::{Intersects, Triangle};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 const N: usize = 1000;
 const N_BRUTE: usize = 50;
-
-fn random_pose(rng: &mut SplitMix64, radius: f64) -> Isometry3<f64> {
-    let t = loop {
-        let p = rng.point();
-        if p.coords.norm() <= 1.0 {
-            break p.coords * radius;
-        }
-    };
-    let q = loop {
-        let q = Quaternion::new(
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-        );
-        let n = q.norm();
-        if n > 0.1 && n <= 1.0 {
-            break q;
-        }
-    };
-    Isometry3::from_parts(Translation3::from(t), UnitQuaternion::from_quaternion(q))
-}
 
 fn placed(p: &ConvexPolyhedron, pose: &Isometry3<f64>) -> Vec<Point3<f64>> {
     p.vertices().iter().map(|v| pose * v).collect()
@@ -84,10 +62,8 @@ fn bench(c: &mut Criterion) {
             ConvexPolyhedron::by_name(na).unwrap(),
             ConvexPolyhedron::by_name(nb).unwrap(),
         );
-        let mut rng = SplitMix64(2009);
-        let poses: Vec<(Isometry3<f64>, Isometry3<f64>)> = (0..N)
-            .map(|_| (random_pose(&mut rng, 0.0), random_pose(&mut rng, 2.0)))
-            .collect();
+        let poses: Vec<(Isometry3<f64>, Isometry3<f64>)> =
+            (0..N as u64).map(|i| placement(2009, i, 2.0)).collect();
         let name = format!("{na}-{nb}");
         group.throughput(Throughput::Elements(N as u64));
         for kind in [InnerSphereKind::Centroid, InnerSphereKind::Chebyshev] {

@@ -9,33 +9,11 @@
 
 use std::collections::BTreeMap;
 
-use cga_collide::adversarial::SplitMix64;
 use cga_collide::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::double_sphere::{collide_with, DoubleSphereTree, InnerSphereKind, Scratch};
-use cga_collide::nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion};
+use cga_collide::experiment::placement;
+use cga_collide::nalgebra::Point3;
 use cga_collide::polyhedron::ConvexPolyhedron;
-
-fn random_pose(rng: &mut SplitMix64, radius: f64) -> Isometry3<f64> {
-    let t = loop {
-        let p = rng.point();
-        if p.coords.norm() <= 1.0 {
-            break p.coords * radius;
-        }
-    };
-    let q = loop {
-        let q = Quaternion::new(
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-            rng.float(-1.0, 1.0),
-        );
-        let n = q.norm();
-        if n > 0.1 && n <= 1.0 {
-            break q;
-        }
-    };
-    Isometry3::from_parts(Translation3::from(t), UnitQuaternion::from_quaternion(q))
-}
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -48,7 +26,7 @@ fn main() {
         ("octahedron", "diamond"),
         ("cube", "cube"),
     ];
-    println!("{n} placements per pair, B's centre uniform in a ball of radius {radius} about A's, level {level}");
+    println!("{n} placements per pair, both centres uniform in an experiment sphere of radius {radius} (`experiment::placement`), level {level}");
     for (na, nb) in pairs {
         let (a, b) = (
             ConvexPolyhedron::by_name(na).unwrap(),
@@ -59,10 +37,7 @@ fn main() {
                 DoubleSphereTree::build(&a, level, kind).unwrap(),
                 DoubleSphereTree::build(&b, level, kind).unwrap(),
             );
-            let mut rng = SplitMix64(2009);
-            let poses: Vec<_> = (0..n)
-                .map(|_| (random_pose(&mut rng, 0.0), random_pose(&mut rng, radius)))
-                .collect();
+            let poses: Vec<_> = (0..n as u64).map(|i| placement(2009, i, radius)).collect();
             let mut scratch = Scratch::new();
             let mut decisions: BTreeMap<String, usize> = BTreeMap::new();
             let (mut spheres, mut triangles, mut collisions, mut mismatches) = (0u64, 0u64, 0, 0);
