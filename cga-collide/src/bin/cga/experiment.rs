@@ -106,11 +106,9 @@ fn inner_name(k: InnerSphereKind) -> &'static str {
 struct Cell {
     pair: (String, String),
     paper_row: Option<usize>,
-    size: usize,
     target: f64,
     radius: f64,
     result: ExperimentResult,
-    seconds: f64,
 }
 
 fn parse_pairs(specs: &[String]) -> Result<Vec<(String, String)>> {
@@ -185,9 +183,8 @@ fn double_spheres(args: DoubleSpheresArgs) -> Result<()> {
             };
             same(x, a_name) && same(y, b_name)
         });
-        for (size, &target) in args.collide.iter().enumerate() {
+        for &target in &args.collide {
             bar.set_message(format!("{a_name}–{b_name} {:.0}%", target * 100.0));
-            let t0 = Instant::now();
             let radius = calibrate_radius(&pa, &pb, target, args.calibration_samples, args.seed);
             let result = run(&variants, radius, args.placements, args.seed, &|n| {
                 bar.inc(n)
@@ -195,11 +192,9 @@ fn double_spheres(args: DoubleSpheresArgs) -> Result<()> {
             cells.push(Cell {
                 pair: (a_name.clone(), b_name.clone()),
                 paper_row,
-                size,
                 target,
                 radius,
                 result,
-                seconds: t0.elapsed().as_secs_f64(),
             });
         }
     }
@@ -254,9 +249,9 @@ fn short(name: &str) -> String {
 }
 
 fn size_label(c: &Cell) -> String {
-    let kind = match (c.size, c.target) {
-        (_, t) if (t - 0.25).abs() < 1e-9 => "large",
-        (_, t) if (t - 0.75).abs() < 1e-9 => "small",
+    let kind = match c.target {
+        t if (t - 0.25).abs() < 1e-9 => "large",
+        t if (t - 0.75).abs() < 1e-9 => "small",
         _ => "",
     };
     format!("{kind} ({:.0}%)", c.target * 100.0)
@@ -455,7 +450,6 @@ fn markdown(
         "\nMismatches against the exact reference: {mismatches} (of {} answers).",
         placements * specs.len() as u64
     );
-    let _ = cells.iter().map(|c| c.seconds).sum::<f64>();
     s
 }
 
