@@ -8,11 +8,11 @@
 
 use std::hint::black_box;
 
-use cga_collide::mesh::TriMesh;
+use cga_collide::hierarchy::sphere_tree::collide;
+use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::nalgebra::{Isometry3, UnitQuaternion, Vector3};
 use cga_collide::query::{Collider, Mode};
-use cga_collide::sphere_tree::collide;
-use cga_collide::sphere_tree::octree::{build, BuildOptions};
+use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 
 fn build_time(c: &mut Criterion) {

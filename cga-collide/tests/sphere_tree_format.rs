@@ -2,8 +2,8 @@
 //! errors on malformed and truncated input, and no panics on any input.
 #![allow(clippy::needless_range_loop)]
 
-use cga_collide::sphere_tree::format::{read, read_lenient, write, FormatError};
-use cga_collide::sphere_tree::{collide, CellState, NestedNode, SphereTree};
+use cga_collide::hierarchy::sphere_tree::format::{read, read_lenient, write, FormatError};
+use cga_collide::hierarchy::sphere_tree::{collide, CellState, NestedNode, SphereTree};
 use proptest::prelude::*;
 
 const NO_COLLISION: &str = include_str!("fixtures/spheretree/seed_no_collision.txt");
