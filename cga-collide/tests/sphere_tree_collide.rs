@@ -1,6 +1,6 @@
-//! Collision of sphere trees: the seed's method, the simultaneous descent and every leaf pair
+//! Collision of sphere trees: the paper's method, the simultaneous descent and every leaf pair
 //! agree on nested trees (random sphere sets and octree trees of meshes in random placements);
-//! octree trees have no false negatives against the exact solids; the seed's C++ as written
+//! octree trees have no false negatives against the exact solids; the paper's C++ as written
 //! misses a collision.
 #![allow(clippy::needless_range_loop)]
 
@@ -32,7 +32,7 @@ fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
 
 fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
     let reference = collide::brute_force(x, y).collides;
-    let s = collide::seed(x, y);
+    let s = collide::paper_method(x, y);
     let m = collide::simultaneous(x, y);
     prop_assert_eq!(s.collides, reference);
     prop_assert_eq!(m.collides, reference);
@@ -46,8 +46,8 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
             ));
         }
     }
-    // The seed as written never claims a collision that is not there.
-    prop_assert!(!collide::seed_as_written(x, y).collides || reference);
+    // The paper's method as published never claims a collision that is not there.
+    prop_assert!(!collide::paper_method_as_published(x, y).collides || reference);
     Ok(reference)
 }
 
@@ -65,7 +65,7 @@ proptest! {
 }
 
 #[test]
-fn seed_as_written_misses_a_collision() {
+fn paper_method_as_published_misses_a_collision() {
     // Y: a root with two children; the first child's ball meets X's leaf but its own leaf does
     // not; the second child's leaf does. The C++ follows only the first meeting child.
     let leaf = |x: f64, r: f64| NestedNode::leaf([x, 0.0, 0.0], r, CellState::Partial);
@@ -92,9 +92,9 @@ fn seed_as_written_misses_a_collision() {
     assert!(y.nesting_violations().is_empty());
     let x = SphereTree::single([1.5, 0.0, 0.0], 1.0, CellState::Full).unwrap();
     assert!(collide::brute_force(&x, &y).collides);
-    assert!(collide::seed(&x, &y).collides);
+    assert!(collide::paper_method(&x, &y).collides);
     assert!(collide::simultaneous(&x, &y).collides);
-    assert!(!collide::seed_as_written(&x, &y).collides);
+    assert!(!collide::paper_method_as_published(&x, &y).collides);
 }
 
 /// A closed, outward-oriented cube mesh.

@@ -26,7 +26,7 @@
 //!
 //! # Canonical order
 //!
-//! Dense storage is indexed by bitmask. The *canonical* order of DESIGN.md (by grade, then
+//! Dense storage is indexed by bitmask. The *canonical* order of `docs/conventions.md` (by grade, then
 //! lexicographic on the ascending index lists) is computed by [`canonical_order`] and used by
 //! [`DenseMultivector::from_canonical`], [`DenseMultivector::to_canonical`] and
 //! [`canonical_blade_names`].

@@ -3,7 +3,7 @@
 //! [`ErrF64`](crate::exact::ErrF64) and on exact integers / rationals. The conformal vectors
 //! are the generated `ga_core::cga::Vector` with its generated scalar product.
 //!
-//! They are phrased in the conformal model (DESIGN.md): with the thesis's scaling
+//! They are phrased in the conformal model (`docs/conventions.md`): with the thesis's scaling
 //! `X = 2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` (no division, so it stays in a ring) and
 //! the sphere `S = 2·up(c) - r² n_inf`, the inner product gives `X·S = -2(|x - c|² - r²)`,
 //! `S·S = 4r²` and `S1·S2 = 2(r1² + r2² - |c1 - c2|²)`; the plane

@@ -1,13 +1,13 @@
-//! Octree sphere trees (the method of the seed paper `003`): a hierarchy of spheres, one per
+//! Octree sphere trees (the method of Fuentes Socorro's work): a hierarchy of spheres, one per
 //! non-empty cell of an octree over a closed mesh, and collision between two such trees.
 //!
 //! * [`SphereTree`]: the 8-ary tree itself (this module), stored flat in breadth-first order;
 //!   [`NestedNode`] is the recursive form used to build one by hand or from a file.
 //! * [`octree`]: building a tree from a closed [`TriMesh`](crate::shape::mesh::TriMesh), cells
 //!   classified full / partial / empty exactly ([`tribox`] is the exact triangle–box test).
-//! * [`collide`]: the seed's collision method (as written, and with its one defect fixed) and a
+//! * [`collide`]: the paper's collision method (as written, and with its one defect fixed) and a
 //!   simultaneous descent; every sphere–sphere test is exact.
-//! * [`format`]: the seed's text format (its annex), reader and writer.
+//! * [`format`]: the paper's text format (its annex), reader and writer.
 //!
 //! ```
 //! use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
@@ -38,7 +38,7 @@ use thiserror::Error;
 use crate::exact::predicates::BallBall;
 use crate::exact::{Kernel, Predicate};
 
-/// The state of an octree cell, as the seed's format writes it (`1` partial, `0` full).
+/// The state of an octree cell, as the paper's format writes it (`1` partial, `0` full).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum CellState {
     /// The cell lies wholly inside the solid (format code `0`).
@@ -48,7 +48,7 @@ pub enum CellState {
 }
 
 impl CellState {
-    /// The seed's code: `0` full, `1` partial.
+    /// The paper's code: `0` full, `1` partial.
     pub fn code(self) -> u8 {
         match self {
             CellState::Full => 0,
@@ -56,7 +56,7 @@ impl CellState {
         }
     }
 
-    /// The state of a seed code (`0` full, `1` partial), `None` for anything else.
+    /// The state of a code of the format (`0` full, `1` partial), `None` for anything else.
     pub fn from_code(code: u8) -> Option<CellState> {
         match code {
             0 => Some(CellState::Full),
@@ -68,7 +68,7 @@ impl CellState {
 
 /// One node of a [`SphereTree`]: a closed ball, its cell's state, and where its children are.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SphereNode {
+pub struct SphereTreeNode {
     /// Centre of the ball.
     pub centre: [f64; 3],
     /// Radius of the ball (finite, not negative).
@@ -79,7 +79,7 @@ pub struct SphereNode {
     child_count: u8,
 }
 
-impl SphereNode {
+impl SphereTreeNode {
     /// Whether the node has no children.
     pub fn is_leaf(&self) -> bool {
         self.child_count == 0
@@ -186,12 +186,12 @@ pub struct NestingViolation {
 /// the same order.
 ///
 /// The collision algorithms of [`collide`] treat the union of the leaf balls as the object;
-/// they are exact (and the seed's method and the simultaneous descent agree) when every child
+/// they are exact (and the paper's method and the simultaneous descent agree) when every child
 /// ball lies inside its parent ball, which [`octree::build`] guarantees and
 /// [`nesting_violations`](Self::nesting_violations) checks.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SphereTree {
-    nodes: Vec<SphereNode>,
+    nodes: Vec<SphereTreeNode>,
 }
 
 impl SphereTree {
@@ -207,7 +207,7 @@ impl SphereTree {
     /// The tree of a recursive node, laid out breadth-first. Checks that every value is finite,
     /// every radius non-negative and no node has more than 8 children.
     pub fn from_nested(root: &NestedNode) -> Result<SphereTree, TreeError> {
-        let mut nodes: Vec<SphereNode> = Vec::new();
+        let mut nodes: Vec<SphereTreeNode> = Vec::new();
         let mut queue: VecDeque<&NestedNode> = VecDeque::new();
         queue.push_back(root);
         // Index that the next pushed node will get.
@@ -245,7 +245,7 @@ impl SphereTree {
                     count: next + n.children.len(),
                 });
             }
-            nodes.push(SphereNode {
+            nodes.push(SphereTreeNode {
                 centre: n.centre,
                 radius: n.radius,
                 state: n.state,
@@ -263,7 +263,7 @@ impl SphereTree {
     }
 
     /// Builds from nodes already in the canonical layout (used by the octree builder).
-    pub(crate) fn from_raw(nodes: Vec<SphereNode>) -> SphereTree {
+    pub(crate) fn from_raw(nodes: Vec<SphereTreeNode>) -> SphereTree {
         SphereTree { nodes }
     }
 
@@ -273,8 +273,8 @@ impl SphereTree {
         state: CellState,
         first_child: u32,
         child_count: u8,
-    ) -> SphereNode {
-        SphereNode {
+    ) -> SphereTreeNode {
+        SphereTreeNode {
             centre,
             radius,
             state,
@@ -320,17 +320,17 @@ impl SphereTree {
     }
 
     /// All nodes, breadth-first (root first).
-    pub fn nodes(&self) -> &[SphereNode] {
+    pub fn nodes(&self) -> &[SphereTreeNode] {
         &self.nodes
     }
 
     /// Node `i` (breadth-first index).
-    pub fn node(&self, i: usize) -> &SphereNode {
+    pub fn node(&self, i: usize) -> &SphereTreeNode {
         &self.nodes[i]
     }
 
     /// The root.
-    pub fn root(&self) -> &SphereNode {
+    pub fn root(&self) -> &SphereTreeNode {
         &self.nodes[0]
     }
 
@@ -371,7 +371,7 @@ impl SphereTree {
 
     /// Heap bytes of the node array (what a query reads).
     pub fn heap_bytes(&self) -> usize {
-        self.nodes.len() * std::mem::size_of::<SphereNode>()
+        self.nodes.len() * std::mem::size_of::<SphereTreeNode>()
     }
 
     /// Every child ball that is not inside its parent ball, decided exactly: the child is
@@ -431,7 +431,7 @@ impl SphereTree {
                 let p = iso.transform_point(&Point3::from(n.centre));
                 let scale = Point3::from(n.centre).coords.abs().max() + t + n.radius;
                 let margin = 16.0 * f64::EPSILON * scale;
-                SphereNode {
+                SphereTreeNode {
                     centre: [p.x, p.y, p.z],
                     radius: next_up(n.radius + margin),
                     ..*n
@@ -462,7 +462,7 @@ pub(crate) fn next_up(x: f64) -> f64 {
 }
 
 /// Whether the closed balls `(c1, r1)` and `(c2, r2)` share a point, decided exactly:
-/// `|c1 - c2| <= r1 + r2` (touching counts, as the seed's `>=`).
+/// `|c1 - c2| <= r1 + r2` (touching counts, as the paper's `>=`).
 ///
 /// A semi-static filter decides almost every case in plain `f64`: with `u = 2^-53`, the
 /// computed `d² = Σ fl(fl(Δ)²)` is within a factor `1 ± γ5` of `|c1 - c2|²` (three rounded

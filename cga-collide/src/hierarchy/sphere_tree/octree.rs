@@ -1,9 +1,9 @@
-//! Building an octree sphere tree from a closed mesh (paper `003`, chapter 2: circumscribe the
+//! Building an octree sphere tree from a closed mesh (chapter 2: circumscribe the
 //! object with a cube, split it into eight equal cubes, recursively, to the chosen depth; every
 //! cell that is not empty becomes a sphere).
 //!
 //! # The grid
-//! The root cell is a **cube** (as in the seed: its examples' roots are cubes of side 10 and 8),
+//! The root cell is a **cube** (as in the paper: its examples' roots are cubes of side 10 and 8),
 //! centred on the mesh's bounding box, with side a little larger than the box's largest side:
 //! the side and the corner are snapped to a dyadic grid (multiples of a power of two `q` about
 //! `2^-(depth + 10)` of the side) so that **every cell corner, centre and half side at every
@@ -18,7 +18,7 @@
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
 //!   **empty**.
 //!
-//! Partial cells are split down to `depth`; full cells are leaves (as in the seed's examples,
+//! Partial cells are split down to `depth`; full cells are leaves (as in the paper's examples,
 //! where state-0 nodes have no children) unless [`BuildOptions::subdivide_full`] is set; empty
 //! cells are dropped. Every cell of the tree keeps its state.
 //!
@@ -63,7 +63,7 @@ pub struct BuildOptions {
     /// The depth of the octree (0: the root cell only).
     pub depth: u32,
     /// Split full cells too (their children are all full), so that every leaf is at `depth`
-    /// and the leaf balls hug the solid more tightly. Off by default (the seed's trees).
+    /// and the leaf balls hug the solid more tightly. Off by default (the paper's trees).
     pub subdivide_full: bool,
     /// Require a closed mesh (every edge used by an even number of triangles); when off, an
     /// open mesh is classified by the even–odd rule of one ray per cell. On by default.
