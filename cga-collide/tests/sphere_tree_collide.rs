@@ -41,7 +41,7 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
         if let Some((i, j)) = r.witness {
             let (a, b) = (x.node(i), y.node(j));
             prop_assert!(a.is_leaf() && b.is_leaf());
-            prop_assert!(cga_collide::hierarchy::sphere_tree::balls_meet(
+            prop_assert!(cga_collide::exact::balls_meet(
                 &a.centre, a.radius, &b.centre, b.radius
             ));
         }
@@ -257,7 +257,7 @@ proptest! {
         wiggle in -4i64..=4,
         scale in prop::sample::select(vec![1e-300, 1e-160, 1e-10, 1.0, 1e10, 1e150, 1e300]),
     ) {
-        use cga_collide::hierarchy::sphere_tree::{balls_meet, balls_meet_exact};
+        use cga_collide::exact::{balls_meet, balls_meet_exact};
         let n = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt().max(1e-3);
         // Centre 2 at distance r1 + r2 (tangent up to rounding), nudged by a few ulps.
         let d = (r1 + r2) * (1.0 + wiggle as f64 * f64::EPSILON);
@@ -276,7 +276,7 @@ proptest! {
 
 #[test]
 fn ball_filter_exact_cases() {
-    use cga_collide::hierarchy::sphere_tree::{balls_meet, balls_meet_exact};
+    use cga_collide::exact::{balls_meet, balls_meet_exact};
     // Integer tangency (3-4-5), just apart, just overlapping, coincident points.
     let cases = [
         ([0.0, 0.0, 0.0], 2.0, [3.0, 4.0, 0.0], 3.0, true),

@@ -150,8 +150,8 @@ impl Signature {
     /// `p` entries `+1`, then `q` entries `-1`, then `r` entries `0` (Cl(p,q,r)).
     pub fn pqr(p: usize, q: usize, r: usize) -> Result<Self, ReferenceError> {
         let mut v = vec![1i8; p];
-        v.extend(std::iter::repeat(-1).take(q));
-        v.extend(std::iter::repeat(0).take(r));
+        v.extend(std::iter::repeat_n(-1, q));
+        v.extend(std::iter::repeat_n(0, r));
         Self::new(&v)
     }
 

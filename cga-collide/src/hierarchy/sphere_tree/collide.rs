@@ -2,7 +2,7 @@
 //!
 //! Two trees collide when a leaf ball of one meets a leaf ball of the other (closed balls:
 //! touching counts, as the paper's `sumaRadio >= distancia`). Every ball–ball test is exact
-//! ([`balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact fall-back),
+//! ([`crate::exact::balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact fall-back),
 //! where the seed computes `sqrt` in `float`.
 //!
 //! # The paper's method (§3.1, `Colision_Arbol` / `Colision_Esfera_Arbol` /
@@ -46,7 +46,8 @@
 //! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
 //! ```
 
-use super::{balls_meet, SphereTree, SphereTreeNode};
+use super::{SphereTree, SphereTreeNode};
+use crate::exact::balls_meet;
 
 /// The answer of a tree–tree collision query and what it cost.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -7,7 +7,7 @@
 //!   classified full / partial / empty exactly ([`tribox`] is the exact triangle–box test).
 //! * [`collide`]: the paper's collision method (as written, and with its one defect fixed) and a
 //!   simultaneous descent; every sphere–sphere test is exact.
-//! * [`format`]: the paper's text format (its annex), reader and writer.
+//! * [`format`](mod@format): the paper's text format (its annex), reader and writer.
 //!
 //! ```
 //! use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
@@ -35,8 +35,7 @@ use std::ops::Range;
 use nalgebra::{Isometry3, Point3};
 use thiserror::Error;
 
-use crate::exact::predicates::BallBall;
-use crate::exact::{Kernel, Predicate};
+use crate::exact::ball_inside;
 
 /// The state of an octree cell, as the paper's format writes it (`1` partial, `0` full).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -407,7 +406,7 @@ impl SphereTree {
                 let d = (Point3::from(cc) - Point3::from(nodes[i].centre)).norm();
                 let mut need = d + cr;
                 while !ball_inside(&cc, cr, &nodes[i].centre, need) {
-                    need = next_up(need.max(f64::MIN_POSITIVE));
+                    need = need.max(f64::MIN_POSITIVE).next_up();
                 }
                 r = r.max(need);
             }
@@ -433,7 +432,7 @@ impl SphereTree {
                 let margin = 16.0 * f64::EPSILON * scale;
                 SphereTreeNode {
                     centre: [p.x, p.y, p.z],
-                    radius: next_up(n.radius + margin),
+                    radius: (n.radius + margin).next_up(),
                     ..*n
                 }
             })
@@ -446,85 +445,4 @@ impl SphereTree {
     pub fn translated(&self, v: [f64; 3]) -> SphereTree {
         self.transformed(&Isometry3::translation(v[0], v[1], v[2]))
     }
-}
-
-/// The next `f64` above a finite non-negative `x`.
-pub(crate) fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        x
-    } else if x == 0.0 {
-        f64::from_bits(1)
-    } else if x > 0.0 {
-        f64::from_bits(x.to_bits() + 1)
-    } else {
-        f64::from_bits(x.to_bits() - 1)
-    }
-}
-
-/// Whether the closed balls `(c1, r1)` and `(c2, r2)` share a point, decided exactly:
-/// `|c1 - c2| <= r1 + r2` (touching counts, as the paper's `>=`).
-///
-/// A semi-static filter decides almost every case in plain `f64`: with `u = 2^-53`, the
-/// computed `d² = Σ fl(fl(Δ)²)` is within a factor `1 ± γ5` of `|c1 - c2|²` (three rounded
-/// differences, squares and two sums of non-negative terms), and the computed
-/// `s² = fl(fl(r1 + r2)²)` within `1 ± γ3` of `(r1 + r2)²`, as long as nothing underflows or
-/// overflows; so `d² > s²·(1 + 16u)` (product rounded too) proves the balls apart and
-/// `d² < s²·(1 - 16u)` proves them meeting. Anything else (near-tangent balls, values below
-/// `1e-290` or infinite) goes to the crate's exact conformal
-/// [`BallBall`] predicate (certified filter, then exact arithmetic).
-#[inline]
-pub fn balls_meet(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    const TINY: f64 = 1e-290;
-    const K: f64 = 16.0 * f64::EPSILON / 2.0; // 16u
-    let (dx, dy, dz) = (c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]);
-    let d2 = dx * dx + dy * dy + dz * dz;
-    let s = r1 + r2;
-    let s2 = s * s;
-    if d2.is_finite() && s2.is_finite() {
-        if d2 == 0.0 && dx == 0.0 && dy == 0.0 && dz == 0.0 {
-            return true; // same centre, radii non-negative
-        }
-        if d2 >= TINY && s2 >= TINY {
-            if d2 > s2 * (1.0 + K) {
-                return false;
-            }
-            if d2 < s2 * (1.0 - K) {
-                return true;
-            }
-        } else if d2 >= TINY && s2 == 0.0 {
-            return false; // two points at distinct places
-        }
-    }
-    balls_meet_exact(c1, r1, c2, r2)
-}
-
-/// [`balls_meet`] without the `f64` filter: the conformal [`BallBall`] predicate through the
-/// crate's [`ExactKernel`](crate::exact::ExactKernel) (reference for the tests).
-pub fn balls_meet_exact(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    crate::exact::ExactKernel::sign::<BallBall, 8>(&[
-        c1[0], c1[1], c1[2], r1, c2[0], c2[1], c2[2], r2,
-    ]) != std::cmp::Ordering::Less
-}
-
-/// `(r2 - r1)^2 - |c1 - c2|^2`, inputs `[c1, r1, c2, r2]`: with `r2 >= r1` the ball 1 lies in
-/// ball 2 exactly when it is `>= 0`.
-struct BallInBall;
-impl Predicate<8> for BallInBall {
-    fn eval<R: ga_core::scalar::Ring>(x: &[R; 8]) -> R {
-        let d0 = x[4].clone() - x[0].clone();
-        let d1 = x[5].clone() - x[1].clone();
-        let d2 = x[6].clone() - x[2].clone();
-        let dr = x[7].clone() - x[3].clone();
-        dr.clone() * dr - (d0.clone() * d0 + d1.clone() * d1 + d2.clone() * d2)
-    }
-}
-
-/// Whether the ball `(c1, r1)` lies inside the ball `(c2, r2)`, exactly.
-pub(crate) fn ball_inside(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    if r1 > r2 {
-        return false;
-    }
-    crate::exact::ExactKernel::sign::<BallInBall, 8>(&[
-        c1[0], c1[1], c1[2], r1, c2[0], c2[1], c2[2], r2,
-    ]) != std::cmp::Ordering::Less
 }

@@ -12,7 +12,7 @@
 //!
 //! # Cells, exactly
 //! A cell (closed box) is
-//! * **partial** when a triangle of the mesh meets it ([`tribox::triangle_meets_box`], exact;
+//! * **partial** when a triangle of the mesh meets it ([`triangle_meets_box`], exact;
 //!   candidates from the mesh's [`Bvh`](crate::hierarchy::bvh::Bvh));
 //! * otherwise wholly inside or wholly outside the solid (the cell is connected and no surface
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
@@ -50,7 +50,7 @@ use num_traits::Zero;
 use thiserror::Error;
 
 use super::tribox::triangle_meets_box;
-use super::{next_up, CellState, SphereTree};
+use super::{CellState, SphereTree};
 use crate::hierarchy::bvh::Aabb;
 use crate::query::{Collider, Mode};
 
@@ -218,7 +218,7 @@ impl Grid {
             }
         }
         while exact(r) * exact(r) < three_h2 {
-            r = next_up(r);
+            r = r.next_up();
         }
         r
     }
@@ -393,7 +393,7 @@ pub fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
             if m & 2 == 0 { b.min[1] } else { b.max[1] },
             if m & 4 == 0 { b.min[2] } else { b.max[2] },
         ];
-        super::ball_inside(&p, 0.0, c, r)
+        crate::exact::ball_inside(&p, 0.0, c, r)
     })
 }
 
