@@ -253,6 +253,12 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         signed_sum(norm_terms)
     };
 
+    let masks: Vec<Literal> = t
+        .blades
+        .iter()
+        .map(|&b| Literal::u32_unsuffixed(b))
+        .collect();
+    let inverse_doc = inverse_doc(t);
     let dense_items = if t.is_dense {
         let coeffs: Vec<Ident> = (0..count).map(|i| format_ident!("c{i}")).collect();
         quote! {
@@ -277,19 +283,14 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
                 }
             }
             impl<T: ::ga_core::scalar::Field> #name<T> {
-                /// The inverse of a general multivector (not only versors), by exact Gaussian
-                /// elimination on its left-multiplication matrix; `None` when it is singular.
-                /// Slow compared with [`inverse`](Self::inverse); exact for exact scalars.
+                /// The unchecked solution of `A X = 1` by Gaussian elimination on the
+                /// left-multiplication matrix (partial pivoting by `Field::pivot_score`); `None`
+                /// when a pivot is exactly zero. Exact for exact scalars; for floats a nearly
+                /// singular `A` gives an inaccurate result: prefer [`inverse`](Self::inverse),
+                /// which checks its answer.
                 pub fn general_inverse(&self) -> Option<Self> {
-                    let columns: ::std::vec::Vec<[T; #count]> = (0..#count)
-                        .map(|j| {
-                            let mut e: [T; #count] = ::core::array::from_fn(|_| #zero);
-                            e[j] = <T as #ring>::one();
-                            let basis = Self::from_coefficients(e);
-                            ::ga_core::ops::Geometric::geometric(self, &basis).into_coefficients()
-                        })
-                        .collect();
-                    let solution = ::ga_core::linalg::solve_columns(&columns, 0)?;
+                    let span: [u32; #count] = [#(#masks),*];
+                    let solution = ::ga_core::inverse::solve(&SIGNATURE, &span, &self.coefficients(), &span)?;
                     let array: [T; #count] = solution.try_into().ok()?;
                     Some(Self::from_coefficients(array))
                 }
@@ -403,13 +404,21 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         }
 
         impl<T: ::ga_core::scalar::Field> #name<T> {
-            /// The versor inverse `Ã / ⟨A Ã⟩₀`: exact for blades and versors; `None` when
-            /// `⟨A Ã⟩₀` is zero. For general multivectors use the dense type's
-            /// `general_inverse`.
+            /// The versor inverse `Ã / ⟨A Ã⟩₀`, `None` when `⟨A Ã⟩₀` is zero. Precondition: `A`
+            /// is a versor (a product of invertible vectors) or a blade; then this is its
+            /// inverse. For any other `A` the result is not an inverse: use
+            /// [`inverse`](Self::inverse), which checks.
             #[inline]
-            pub fn inverse(&self) -> Option<Self> {
+            pub fn versor_inverse(&self) -> Option<Self> {
                 let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
                 Some(self.reverse().scale(&inv))
+            }
+            #[doc = #inverse_doc]
+            pub fn inverse(&self) -> Option<Self> {
+                let x = [#(self.#fields.clone()),*];
+                let [#(#fields),*]: [T; #count] =
+                    ::ga_core::inverse::inverse(&SIGNATURE, &[#(#masks),*], &x)?.try_into().ok()?;
+                Some(#name { #(#fields),* })
             }
         }
 
@@ -499,6 +508,34 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         #dense_items
         #(#subset_conversions)*
     }
+}
+
+/// The documentation of `inverse()`: what `None` means depends on whether the type is closed
+/// under the geometric product.
+fn inverse_doc(t: &TypeModel) -> String {
+    let masks: Vec<Blade> = t.blades.clone();
+    let mut span = vec![0 as Blade];
+    for &m in &masks {
+        if !span.contains(&m) {
+            let more: Vec<Blade> = span.iter().map(|s| s ^ m).collect();
+            span.extend(more);
+        }
+    }
+    let closed = span.iter().all(|b| t.contains(*b));
+    let none = if closed {
+        "`None` when `A` has no inverse"
+    } else {
+        "`None` when `A` has no inverse, or when its inverse has blades outside this type (the \
+         type is not closed under the geometric product: convert to a larger type first)"
+    };
+    format!(
+        "The inverse `A⁻¹` with `A A⁻¹ = A⁻¹ A = 1`, checked: {none}. For floats, `Some` means \
+         the products equal 1 up to the rounding error of computing them (see \
+         `ga_core::inverse` for the exact tolerance), and non-finite input gives `None`. Tries \
+         the versor formula first (see [`versor_inverse`](Self::versor_inverse)), then Gaussian \
+         elimination; slower than `versor_inverse`, which is enough when `A` is known to be a \
+         versor."
+    )
 }
 
 /// Products, sums and sandwiches of one ordered pair of types.
