@@ -352,10 +352,13 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         .iter()
         .map(|f| quote!(self.#f.ulps_eq(&other.#f, epsilon.clone(), max_ulps)));
 
+    let struct_attributes = &alg.struct_attributes;
     quote! {
         #(#attrs)*
         #[doc = #auto_doc]
         #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        #[repr(C)]
+        #(#struct_attributes)*
         pub struct #name<T> {
             #(#[doc = #field_docs] pub #fields: T,)*
         }

@@ -98,6 +98,8 @@ pub struct Algebra {
     /// Declared types, then the dense type last.
     pub types: Vec<TypeModel>,
     pub degenerate: bool,
+    /// Outer attributes put on every generated struct (the `attributes` key).
+    pub struct_attributes: Vec<Attribute>,
 }
 
 fn err(span: Span, msg: impl std::fmt::Display) -> syn::Error {
@@ -257,6 +259,7 @@ impl Algebra {
         });
         Ok(Algebra {
             module: decl.name,
+            struct_attributes: decl.attributes,
             degenerate: signature.contains(&0),
             signature,
             basis,
