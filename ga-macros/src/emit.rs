@@ -7,7 +7,7 @@ use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::blade::{self, Blade};
-use crate::model::{Algebra, Output, Product, Term, TypeModel};
+use crate::model::{Algebra, Output, Product, Term, TypeModel, PRODUCTS};
 
 /// Everything the declaration expands to.
 pub fn emit(alg: &Algebra) -> TokenStream {
@@ -549,8 +549,8 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let lhs = quote!(self);
     let rhs = quote!(rhs);
     let mut items = Vec::new();
-    for kind in Product::ALL {
-        let model = alg.bilinear(kind, &ta.blades, &tb.blades);
+    for spec in &PRODUCTS {
+        let model = alg.bilinear(spec.kind, &ta.blades, &tb.blades);
         let ty = out_ty(alg, model.output);
         let body = bilinear_body(
             alg,
@@ -559,18 +559,17 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
             (&lhs, Output::Type(a)),
             (&rhs, Output::Type(b)),
         );
-        let (trait_name, method) = match kind {
-            Product::Geometric => ("Geometric", "geometric"),
-            Product::Wedge => ("Wedge", "wedge"),
-            Product::LeftContraction => ("LeftContraction", "left_contraction"),
-            Product::RightContraction => ("RightContraction", "right_contraction"),
-            Product::ScalarProduct => ("ScalarProduct", "scalar_product"),
-            Product::Regressive => ("Regressive", "regressive"),
-        };
-        let trait_ident = format_ident!("{trait_name}");
-        let method = format_ident!("{method}");
+        let trait_ident = format_ident!("{}", spec.trait_name);
+        let method = format_ident!("{}", spec.method);
         let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
-        let doc = format!("{terms} multiplications.");
+        let out_name = match model.output {
+            Output::Scalar => "scalar".to_string(),
+            Output::Type(i) => alg.types[i].name.to_string(),
+        };
+        let doc = format!(
+            "{} `{an} {} {bn} → {out_name}`, {terms} multiplications.",
+            spec.title, spec.symbol
+        );
         items.push(quote! {
             impl<T: #ring> ::ga_core::ops::#trait_ident<#bn<T>> for #an<T> {
                 type Output = #ty;
@@ -579,19 +578,19 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 fn #method(&self, rhs: &#bn<T>) -> #ty { #body }
             }
         });
-        let op = match kind {
-            Product::Geometric => Some(("Mul", "mul")),
-            Product::Wedge => Some(("BitXor", "bitxor")),
-            Product::LeftContraction => Some(("BitOr", "bitor")),
-            Product::Regressive => Some(("BitAnd", "bitand")),
-            _ => None,
-        };
-        if let Some((op_trait, op_method)) = op {
+        if let Some((op_trait, op_method, op_symbol)) = spec.operator {
             let op_trait = format_ident!("{op_trait}");
             let op_method = format_ident!("{op_method}");
+            let op_doc = format!(
+                "`{an} {op_symbol} {bn}`: the {} (`{an} {} {bn} → {out_name}`, {terms} \
+                 multiplications).",
+                spec.title.to_lowercase(),
+                spec.symbol
+            );
             items.push(quote! {
                 impl<T: #ring> ::core::ops::#op_trait<#bn<T>> for #an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: #bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(&self, &rhs)
@@ -599,6 +598,7 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 }
                 impl<T: #ring> ::core::ops::#op_trait<&#bn<T>> for &#an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: &#bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(self, rhs)
