@@ -182,7 +182,7 @@ fn load_mesh(spec: &str) -> Result<TriMesh> {
             _ => {}
         }
     }
-    TriMesh::load(path).with_context(|| format!("cannot load mesh `{spec}`"))
+    TriMesh::load(path).context("cannot load a mesh")
 }
 
 fn spinner(message: &str) -> ProgressBar {

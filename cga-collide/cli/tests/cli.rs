@@ -364,3 +364,14 @@ fn double_sphere_experiment_runs_small_and_checks_every_answer() {
     let bad = cga(&["experiment", "double-spheres", "--collide", "1.5"], &dir);
     assert!(!bad.status.success());
 }
+
+#[test]
+fn a_missing_file_is_named_once_with_its_reason_and_a_remedy() {
+    let dir = temp_dir("missing");
+    let out = cga(&["collide", "no-such-mesh.off", "bunny"], &dir);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.matches("no-such-mesh.off").count(), 1, "{err}");
+    assert_eq!(err.matches("os error").count(), 1, "{err}");
+    assert!(err.contains("check the path"), "{err}");
+}

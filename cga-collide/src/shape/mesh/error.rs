@@ -75,13 +75,12 @@ pub enum MeshError {
         max: f64,
     },
     /// The file could not be opened or read.
-    #[error("{file}: cannot read: {source}")]
+    #[error("{file}: cannot read the file: {error} (check the path and its permissions)")]
     Io {
         /// The file.
         file: String,
-        /// The underlying error.
-        #[source]
-        source: std::io::Error,
+        /// The operating system's error (in the message, so not repeated as a source).
+        error: std::io::Error,
     },
     /// The format could not be told from the file name.
     #[error("{file}: unknown mesh format {extension:?} (expected .obj, .off, .ply or .stl, optionally followed by .gz)")]

@@ -149,9 +149,9 @@ impl TriMesh {
     pub fn load_as(path: impl AsRef<Path>, format: MeshFormat) -> Result<Self, MeshError> {
         let path = path.as_ref();
         let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
+        let bytes = std::fs::read(path).map_err(|error| MeshError::Io {
             file: name.clone(),
-            source,
+            error,
         })?;
         Self::from_bytes(&bytes, format, &name)
     }
@@ -163,9 +163,9 @@ impl TriMesh {
             let mut plain = Vec::new();
             flate2::read::MultiGzDecoder::new(bytes)
                 .read_to_end(&mut plain)
-                .map_err(|source| MeshError::Io {
+                .map_err(|error| MeshError::Io {
                     file: name.to_owned(),
-                    source,
+                    error,
                 })?;
             return Self::from_bytes(&plain, format, name);
         }
