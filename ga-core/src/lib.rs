@@ -7,6 +7,7 @@
 extern crate self as ga_core;
 
 pub mod cga;
+pub mod exp_log;
 pub mod format;
 pub mod linalg;
 pub mod ops;
