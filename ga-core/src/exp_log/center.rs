@@ -117,7 +117,10 @@ impl<T: Elementary> Cx<T> {
         Cx::new(re, T::zero())
     }
     fn add(&self, o: &Self) -> Self {
-        Cx::new(self.re.clone() + o.re.clone(), self.im.clone() + o.im.clone())
+        Cx::new(
+            self.re.clone() + o.re.clone(),
+            self.im.clone() + o.im.clone(),
+        )
     }
     fn mul(&self, o: &Self) -> Self {
         Cx::new(
@@ -192,10 +195,7 @@ fn cx_to_z<T: Elementary>(c: Cx<T>) -> Z<T> {
 fn split_map<T: Elementary>(z: &Z<T>, f: impl Fn(&T) -> Option<T>) -> Option<Z<T>> {
     let p = f(&(z.a.clone() + z.b.clone()))?;
     let m = f(&(z.a.clone() - z.b.clone()))?;
-    Some(Z::new(
-        (p.clone() + m.clone()) * half(),
-        (p - m) * half(),
-    ))
+    Some(Z::new((p.clone() + m.clone()) * half(), (p - m) * half()))
 }
 
 /// `(C(x), S(x))` for `x = B²`, so that `exp(B) = C + B S`.
@@ -214,10 +214,7 @@ pub(crate) fn exp_parts<T: Elementary>(kind: Kind, x: &Z<T>) -> (Z<T>, Z<T>) {
             let (c0, s0) = cs_real(&x.a);
             let ds = ds_real(&x.a, &c0, &s0);
             let dc = s0.clone() * half();
-            (
-                Z::new(c0, dc * x.b.clone()),
-                Z::new(s0, ds * x.b.clone()),
-            )
+            (Z::new(c0, dc * x.b.clone()), Z::new(s0, ds * x.b.clone()))
         }
         Kind::Complex => {
             let z = z_to_cx(x);
@@ -286,7 +283,12 @@ pub(crate) fn log_factor<T: Elementary>(kind: Kind, c: &Z<T>, w: &Z<T>) -> Optio
                     return None;
                 }
                 let f = |p: i64, q: i64| T::from_i64(p) / T::from_i64(q);
-                return Some(cx_to_z(wz.poly(&[T::one(), f(-1, 6), f(3, 40), f(-5, 112)])));
+                return Some(cx_to_z(wz.poly(&[
+                    T::one(),
+                    f(-1, 6),
+                    f(3, 40),
+                    f(-5, 112),
+                ])));
             }
             // F = ln(c + √w) / √w (even in the sign of √w).
             let r = wz.sqrt();
@@ -347,7 +349,8 @@ mod tests {
             Kind::Complex => -1.0,
             Kind::Dual => 0.0,
         };
-        let mul = |p: &Z<f64>, q: &Z<f64>| Z::new(p.a * q.a + jj * p.b * q.b, p.a * q.b + p.b * q.a);
+        let mul =
+            |p: &Z<f64>, q: &Z<f64>| Z::new(p.a * q.a + jj * p.b * q.b, p.a * q.b + p.b * q.a);
         let (mut c, mut s) = (Z::new(0.0, 0.0), Z::new(0.0, 0.0));
         let mut pow = Z::new(1.0, 0.0);
         let mut fact_even = 1.0;
@@ -364,7 +367,13 @@ mod tests {
     #[test]
     fn exp_parts_agree_with_the_series_in_all_three_systems() {
         for kind in [Kind::Split, Kind::Complex, Kind::Dual] {
-            for (a, b) in [(0.0, 0.0), (-2.0, 0.5), (1.5, -0.7), (-0.3, 1.2), (1e-6, 2e-6)] {
+            for (a, b) in [
+                (0.0, 0.0),
+                (-2.0, 0.5),
+                (1.5, -0.7),
+                (-0.3, 1.2),
+                (1e-6, 2e-6),
+            ] {
                 let x = Z::new(a, b);
                 let (c, s) = exp_parts(kind, &x);
                 let (cs, ss) = series(kind, &x);
@@ -378,7 +387,7 @@ mod tests {
     #[test]
     fn sqrt_and_recip_invert_multiplication() {
         for (kind, jj) in [(Kind::Split, 1.0), (Kind::Complex, -1.0), (Kind::Dual, 0.0)] {
-            let z = Z::new(2.0, 0.5);
+            let z = Z::new(2.0f64, 0.5);
             let r = sqrt(kind, &z).unwrap();
             let sq = Z::new(r.a * r.a + jj * r.b * r.b, 2.0 * r.a * r.b);
             assert!((sq.a - z.a).abs() < 1e-14 && (sq.b - z.b).abs() < 1e-14);

@@ -44,11 +44,13 @@ fn coeff_norm2<T: Ring>(q: &Quadvector<T>) -> T {
 }
 
 /// The unit `J` of the plane a 4-vector `q` spans with `1`: `None` (only the real line) when
-/// `q = 0`; otherwise `J = q/√|q²|` with its kind, or the dual kind with `J = q/|q|` when
-/// `q² = 0` up to rounding.
-fn unit_of<T: Elementary>(q: &Quadvector<T>) -> Option<(Kind, Quadvector<T>)> {
+/// `q` is zero up to rounding against `scale` (the size of the squares it came from);
+/// otherwise `J = q/√|q²|` with its kind, or the dual kind with `J = q/|q|` when `q² = 0` up
+/// to rounding. (Rounding noise must not pick a plane: minus a boost would get a spurious
+/// rotation by π in it.)
+fn unit_of<T: Elementary>(q: &Quadvector<T>, scale: &T) -> Option<(Kind, Quadvector<T>)> {
     let e2 = coeff_norm2(q);
-    if e2.is_zero() {
+    if e2.is_zero() || quad_coeffs(q).iter().all(|x| center::negligible(x, scale)) {
         return None;
     }
     let qq = q.scalar_product(q);
@@ -70,6 +72,38 @@ fn coord<T: Field>(y: &Quadvector<T>, j: &Quadvector<T>) -> T {
         .zip(quad_coeffs(j))
         .fold(T::zero(), |acc, (a, b)| acc + a * b);
     dot / coeff_norm2(j)
+}
+
+/// `(Σ |bₖ|)²`: the scale of rounding errors in products of `b` with itself.
+fn biv_size2<T: Elementary>(b: &Bivector<T>) -> T {
+    let s = biv_coeffs(b)
+        .into_iter()
+        .fold(T::zero(), |a, x| a + x.abs());
+    s.clone() * s
+}
+
+/// `(Σ |coefficients|)²` of `s + b + q`.
+fn versor_size2<T: Elementary>(s: &T, q: &Quadvector<T>, b: &Bivector<T>) -> T {
+    let size = quad_coeffs(q)
+        .into_iter()
+        .chain(biv_coeffs(b))
+        .fold(s.abs(), |a, x| a + x.abs());
+    size.clone() * size
+}
+
+fn biv_coeffs<T: Clone>(b: &Bivector<T>) -> [T; 10] {
+    [
+        b.e12.clone(),
+        b.e13.clone(),
+        b.e14.clone(),
+        b.e15.clone(),
+        b.e23.clone(),
+        b.e24.clone(),
+        b.e25.clone(),
+        b.e34.clone(),
+        b.e35.clone(),
+        b.e45.clone(),
+    ]
 }
 
 /// The bivector part of `B J`.
@@ -125,14 +159,14 @@ impl<T: Elementary> Bivector<T> {
     /// ```
     /// use ga_core::cga::Bivector;
     /// // A screw: a rotation in e12 and a translation along e3 (e3 ∧ n_inf = e34 + e35).
-    /// let b = Bivector::new(0.7, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0);
+    /// let b = Bivector::new(0.7f64, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0);
     /// let v = b.exp();
     /// assert!((v.norm_squared() - 1.0).abs() < 1e-15);
     /// assert!(approx::abs_diff_eq!(v.log().unwrap(), b, epsilon = 1e-15));
     /// ```
     pub fn exp(&self) -> Even<T> {
         let (alpha, beta) = square(self);
-        let unit = unit_of(&beta);
+        let unit = unit_of(&beta, &biv_size2(self));
         let x = in_plane(&unit, alpha, &beta);
         let (c, s) = center::exp_parts(kind_of(&unit), &x);
         let (cs, cq) = scalar_quad(&c, &unit);
@@ -158,12 +192,15 @@ impl<T: Elementary> Bivector<T> {
     pub fn split(&self) -> Option<(Bivector<T>, Bivector<T>)> {
         let (alpha, beta) = square(self);
         let e2 = coeff_norm2(&beta);
-        if e2.is_zero() {
+        if unit_of(&beta, &biv_size2(self)).is_none() {
             return Some((self.clone(), Bivector::zero()));
         }
         let gamma = beta.scalar_product(&beta);
         let disc = alpha.clone() * alpha.clone() - gamma;
-        if !disc.is_finite() || center::negligible(&disc, &(alpha.clone() * alpha.clone() + e2)) || disc < T::zero() {
+        if !disc.is_finite()
+            || center::negligible(&disc, &(alpha.clone() * alpha.clone() + e2))
+            || disc < T::zero()
+        {
             return None;
         }
         let root = disc.sqrt();
@@ -171,7 +208,8 @@ impl<T: Elementary> Bivector<T> {
         let mu_p = (alpha.clone() + root.clone()) * half.clone();
         let mu_m = (alpha - root.clone()) * half.clone();
         let b_beta_half = times(self, &beta).scale(&half);
-        let part = |mu: &T, denom: T| (self.scale(mu) - b_beta_half.clone()).scale(&(T::one() / denom));
+        let part =
+            |mu: &T, denom: T| (self.scale(mu) - b_beta_half.clone()).scale(&(T::one() / denom));
         Some((part(&mu_p, root.clone()), part(&mu_m, -root)))
     }
 }
@@ -180,9 +218,11 @@ impl<T: Elementary> Even<T> {
     /// The principal logarithm of an even versor: the bivector `B` with `exp(B) = V / |V|`,
     /// where `|V|² = ⟨V Ṽ⟩₀ > 0`.
     ///
-    /// Principal range: every rotation part of `B` (each commuting component with `B±² < 0`)
-    /// has angle `|B±| < π` (rotation angle below 2π); boosts, dilations, translations and
-    /// transversions have no range limit. The scale of `V` is dropped.
+    /// Principal range: a rotation part of `B` (a commuting component with `B±² < 0`) has
+    /// angle `|B±| < π` (rotation angle below 2π), and when both components are rotations
+    /// (two orthogonal Euclidean planes, e.g. `θ₁ e12 + θ₂ e34`) `|θ₁| + |θ₂| < π`, because
+    /// `exp(π(e12 + e34)) = 1`. Boosts, dilations, translations and transversions have no
+    /// range limit. The scale of `V` is dropped.
     ///
     /// `None` when: `V` is not a versor up to rounding (`⟨V Ṽ⟩₀ ≤ 0`, not finite, or
     /// `⟨V Ṽ⟩₄` not negligible against the coefficients); or `V / |V|` is on the branch cut,
@@ -194,10 +234,15 @@ impl<T: Elementary> Even<T> {
     /// Translators and transversions (`V = 1 + N`, `N² = 0`) give exactly `N` over rationals.
     pub fn log(&self) -> Option<Bivector<T>> {
         let (c0, cq, w) = self.normalized_parts()?;
+        let size2 = versor_size2(&c0, &cq, &w);
         let (w0, wq) = square(&w);
         // The plane {1, J}: from whichever 4-vector is larger (both lie in it for versors).
-        let q = if coeff_norm2(&cq) >= coeff_norm2(&wq) { &cq } else { &wq };
-        let unit = unit_of(q);
+        let q = if coeff_norm2(&cq) >= coeff_norm2(&wq) {
+            &cq
+        } else {
+            &wq
+        };
+        let unit = unit_of(q, &size2);
         let c = in_plane(&unit, c0, &cq);
         let w2 = in_plane(&unit, w0, &wq);
         let f = center::log_factor(kind_of(&unit), &c, &w2)?;
@@ -212,7 +257,7 @@ impl<T: Elementary> Even<T> {
     pub fn sqrt(&self) -> Option<Even<T>> {
         let lambda = self.norm_squared().sqrt();
         let (c0, cq, w) = self.normalized_parts()?;
-        let unit = unit_of(&cq);
+        let unit = unit_of(&cq, &versor_size2(&c0, &cq, &w));
         let c = in_plane(&unit, c0.clone(), &cq);
         let two = T::from_i64(2);
         let n2 = Z::new(two.clone() * (T::one() + c.a), two * c.b);
@@ -232,13 +277,11 @@ impl<T: Elementary> Even<T> {
         }
         let (_, _, vv4) = even_parts(Even::from(self.geometric(&self.reverse())));
         let (s, b, q) = even_parts(self.clone());
-        let size = quad_coeffs(&q).into_iter().fold(s.abs(), |a, x| a + x.abs())
-            + [b.e12.clone(), b.e13.clone(), b.e14.clone(), b.e15.clone(), b.e23.clone()]
-                .into_iter()
-                .chain([b.e24.clone(), b.e25.clone(), b.e34.clone(), b.e35.clone(), b.e45.clone()])
-                .fold(T::zero(), |a, x| a + x.abs());
-        let scale = size.clone() * size;
-        if !quad_coeffs(&vv4).iter().all(|x| center::negligible(x, &scale)) {
+        let scale = versor_size2(&s, &q, &b);
+        if !quad_coeffs(&vv4)
+            .iter()
+            .all(|x| center::negligible(x, &scale))
+        {
             return None;
         }
         let inv = T::one() / n.sqrt();
@@ -341,7 +384,9 @@ impl<T: Elementary> Rotor<T> {
     /// assert!((p - Point3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
     /// ```
     pub fn rotation(axis: [T; 3], angle: T) -> Option<Self> {
-        let n2 = axis.iter().fold(T::zero(), |a, x| a + x.clone() * x.clone());
+        let n2 = axis
+            .iter()
+            .fold(T::zero(), |a, x| a + x.clone() * x.clone());
         if !(n2 > T::zero()) || !n2.is_finite() {
             return None;
         }
@@ -364,14 +409,14 @@ impl<T: Elementary> Rotor<T> {
         ))
     }
 
-    /// The dilation by `factor > 0` about the origin: `D = exp(½ ln(factor) · e45)`, with
+    /// The dilation by `factor > 0` about the origin: `D = exp(-½ ln(factor) · e45)`, with
     /// `down(D up(x) D̃) = factor · x`. `None` unless `factor` is positive and finite.
     /// (`e45 = n_inf ∧ n_0`.)
     pub fn dilator(factor: T) -> Option<Self> {
         if !(factor > T::zero()) || !factor.is_finite() {
             return None;
         }
-        let g = factor.ln() * (T::one() / T::from_i64(2));
+        let g = -(factor.ln() * (T::one() / T::from_i64(2)));
         let z = T::zero();
         Some(Rotor::new(
             g.cosh(),

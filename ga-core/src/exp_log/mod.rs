@@ -33,7 +33,8 @@
 //!
 //! Versors are normalised first (`V / √⟨V Ṽ⟩₀`); the logarithm of `λV` is that of `V`. The
 //! principal logarithm has every rotation component with angle `|θ| < π` (the bivector
-//! `θ U`, `U² = -1`, rotating by `2θ`). `log` returns `None` for non-versors (`⟨V Ṽ⟩₀ ≤ 0`,
+//! `θ U`, `U² = -1`, rotating by `2θ`), and, for two rotation components in orthogonal planes
+//! of Cl(4,1), `|θ₁| + |θ₂| < π` (since `exp(π(e12 + e34)) = 1`). `log` returns `None` for non-versors (`⟨V Ṽ⟩₀ ≤ 0`,
 //! non-finite, or a non-negligible `⟨V Ṽ⟩₄`), on the branch cut (a rotation component equal
 //! to `-1`: rotation by 2π, whose plane is not determined) and where no real logarithm
 //! exists (minus a pure boost or translation). `sqrt` returns `None` in the same places.

@@ -46,16 +46,7 @@ impl<T: Elementary> Bivector<T> {
     pub fn exp(&self) -> Motor<T> {
         let (c, s) = center::exp_parts(Kind::Dual, &square(self));
         let sb = self.scale(&s.a) + times_i(self).scale(&s.b);
-        Motor::new(
-            c.a,
-            sb.e01,
-            sb.e02,
-            sb.e03,
-            sb.e12,
-            sb.e13,
-            sb.e23,
-            c.b,
-        )
+        Motor::new(c.a, sb.e01, sb.e02, sb.e03, sb.e12, sb.e13, sb.e23, c.b)
     }
 }
 
@@ -107,13 +98,15 @@ impl<T: Elementary> Motor<T> {
         // M M̃ = n + m e0123; m = 0 for motors.
         let mm = Motor::from(self.geometric(&self.reverse()));
         let scale = n.clone()
-            + n.sqrt()
-                * (self.e01.abs() + self.e02.abs() + self.e03.abs() + self.e0123.abs());
+            + n.sqrt() * (self.e01.abs() + self.e02.abs() + self.e03.abs() + self.e0123.abs());
         if !center::negligible(&mm.e0123, &scale) {
             return None;
         }
         let inv = T::one() / n.sqrt();
-        let c = Z::new(self.s.clone() * inv.clone(), self.e0123.clone() * inv.clone());
+        let c = Z::new(
+            self.s.clone() * inv.clone(),
+            self.e0123.clone() * inv.clone(),
+        );
         Some((c, bivector_of(self).scale(&inv)))
     }
 }

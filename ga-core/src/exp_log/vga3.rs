@@ -60,7 +60,11 @@ impl<T: Elementary> Rotor<T> {
     /// ```
     pub fn log(&self) -> Option<Bivector<T>> {
         let (c, w) = self.normalized_parts()?;
-        let f = center::log_factor(Kind::Split, &Z::new(c, T::zero()), &Z::new(w.norm_squared_signed(), T::zero()))?;
+        let f = center::log_factor(
+            Kind::Split,
+            &Z::new(c, T::zero()),
+            &Z::new(w.norm_squared_signed(), T::zero()),
+        )?;
         Some(w.scale(&f.a))
     }
 
