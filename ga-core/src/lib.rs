@@ -9,6 +9,7 @@ extern crate self as ga_core;
 pub mod cga;
 pub mod exp_log;
 pub mod format;
+pub mod interop;
 pub mod linalg;
 pub mod ops;
 pub mod pga3;
