@@ -10,6 +10,7 @@ pub mod cga;
 pub mod exp_log;
 pub mod format;
 pub mod interop;
+pub mod inverse;
 pub mod linalg;
 pub mod ops;
 pub mod pga3;

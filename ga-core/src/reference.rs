@@ -66,8 +66,9 @@ use std::sync::Arc;
 
 use crate::scalar::{Field, Real, Ring};
 
-/// The largest number of generators the reference supports.
-pub const MAX_GENERATORS: usize = 6;
+/// The largest number of generators the reference supports: 10 (1024 blades, so a product
+/// visits about a million blade pairs; enough for double conformal Cl(8,2)).
+pub const MAX_GENERATORS: usize = 10;
 
 /// What went wrong when building reference multivectors.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

@@ -56,14 +56,14 @@ proptest! {
         let dot = la.scalar_product(&lb);
         let sandwich = lr.sandwich_unit(&la);
         let ee = le * le;
-        let inv = le.inverse();
+        let inv = le.versor_inverse();
         for i in 0..4 {
             prop_assert_eq!(unpack!(Rotor { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, gp, i), a[i] * b[i]);
             prop_assert_eq!(unpack!(Bivector { e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, wedge, i), a[i] ^ b[i]);
             prop_assert_eq!(dot.lanes()[i], a[i].scalar_product(&b[i]));
             prop_assert_eq!(unpack!(Vector { e1, e2, e3, e4, e5 }, sandwich, i), r[i].sandwich_unit(&a[i]));
             prop_assert_eq!(unpack!(Even { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345 }, ee, i), e[i] * e[i]);
-            if let (Some(li), Some(si)) = (inv, e[i].inverse()) {
+            if let (Some(li), Some(si)) = (inv, e[i].versor_inverse()) {
                 prop_assert_eq!(unpack!(Even { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345 }, li, i), si);
             }
         }
@@ -108,7 +108,8 @@ fn lane_semantics() {
     assert_eq!(q.lanes()[1], f64::INFINITY);
     assert!(!q.all_finite());
     assert!(F64x4::zero().checked_recip().is_none());
-    assert_eq!(x.pivot_score(), 0.0);
+    assert_eq!(x.pivot_score(), 4.0);
+    assert_eq!(F64x4::from([1.0, f64::NAN, 0.0, 0.0]).pivot_score(), f64::INFINITY);
     assert_eq!(F32x8::from_i64(3).lanes(), [3.0; 8]);
     assert_ne!(F64x4::splat(f64::NAN), F64x4::splat(f64::NAN));
     // The dense inverse runs on lanes (here the same element in every lane).

@@ -7,7 +7,7 @@ use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::blade::{self, Blade};
-use crate::model::{Algebra, Output, Product, Term, TypeModel};
+use crate::model::{Algebra, Output, Product, Term, TypeModel, PRODUCTS};
 
 /// Everything the declaration expands to.
 pub fn emit(alg: &Algebra) -> TokenStream {
@@ -253,6 +253,12 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         signed_sum(norm_terms)
     };
 
+    let masks: Vec<Literal> = t
+        .blades
+        .iter()
+        .map(|&b| Literal::u32_unsuffixed(b))
+        .collect();
+    let inverse_doc = inverse_doc(t);
     let dense_items = if t.is_dense {
         let coeffs: Vec<Ident> = (0..count).map(|i| format_ident!("c{i}")).collect();
         quote! {
@@ -277,19 +283,14 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
                 }
             }
             impl<T: ::ga_core::scalar::Field> #name<T> {
-                /// The inverse of a general multivector (not only versors), by exact Gaussian
-                /// elimination on its left-multiplication matrix; `None` when it is singular.
-                /// Slow compared with [`inverse`](Self::inverse); exact for exact scalars.
+                /// The unchecked solution of `A X = 1` by Gaussian elimination on the
+                /// left-multiplication matrix (partial pivoting by `Field::pivot_score`); `None`
+                /// when a pivot is exactly zero. Exact for exact scalars; for floats a nearly
+                /// singular `A` gives an inaccurate result: prefer [`inverse`](Self::inverse),
+                /// which checks its answer.
                 pub fn general_inverse(&self) -> Option<Self> {
-                    let columns: ::std::vec::Vec<[T; #count]> = (0..#count)
-                        .map(|j| {
-                            let mut e: [T; #count] = ::core::array::from_fn(|_| #zero);
-                            e[j] = <T as #ring>::one();
-                            let basis = Self::from_coefficients(e);
-                            ::ga_core::ops::Geometric::geometric(self, &basis).into_coefficients()
-                        })
-                        .collect();
-                    let solution = ::ga_core::linalg::solve_columns(&columns, 0)?;
+                    let span: [u32; #count] = [#(#masks),*];
+                    let solution = ::ga_core::inverse::solve(&SIGNATURE, &span, &self.coefficients(), &span)?;
                     let array: [T; #count] = solution.try_into().ok()?;
                     Some(Self::from_coefficients(array))
                 }
@@ -351,10 +352,13 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         .iter()
         .map(|f| quote!(self.#f.ulps_eq(&other.#f, epsilon.clone(), max_ulps)));
 
+    let struct_attributes = &alg.struct_attributes;
     quote! {
         #(#attrs)*
         #[doc = #auto_doc]
         #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        #[repr(C)]
+        #(#struct_attributes)*
         pub struct #name<T> {
             #(#[doc = #field_docs] pub #fields: T,)*
         }
@@ -403,13 +407,21 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         }
 
         impl<T: ::ga_core::scalar::Field> #name<T> {
-            /// The versor inverse `Ã / ⟨A Ã⟩₀`: exact for blades and versors; `None` when
-            /// `⟨A Ã⟩₀` is zero. For general multivectors use the dense type's
-            /// `general_inverse`.
+            /// The versor inverse `Ã / ⟨A Ã⟩₀`, `None` when `⟨A Ã⟩₀` is zero. Precondition: `A`
+            /// is a versor (a product of invertible vectors) or a blade; then this is its
+            /// inverse. For any other `A` the result is not an inverse: use
+            /// [`inverse`](Self::inverse), which checks.
             #[inline]
-            pub fn inverse(&self) -> Option<Self> {
+            pub fn versor_inverse(&self) -> Option<Self> {
                 let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
                 Some(self.reverse().scale(&inv))
+            }
+            #[doc = #inverse_doc]
+            pub fn inverse(&self) -> Option<Self> {
+                let x = [#(self.#fields.clone()),*];
+                let [#(#fields),*]: [T; #count] =
+                    ::ga_core::inverse::inverse(&SIGNATURE, &[#(#masks),*], &x)?.try_into().ok()?;
+                Some(#name { #(#fields),* })
             }
         }
 
@@ -501,6 +513,34 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
     }
 }
 
+/// The documentation of `inverse()`: what `None` means depends on whether the type is closed
+/// under the geometric product.
+fn inverse_doc(t: &TypeModel) -> String {
+    let masks: Vec<Blade> = t.blades.clone();
+    let mut span = vec![0 as Blade];
+    for &m in &masks {
+        if !span.contains(&m) {
+            let more: Vec<Blade> = span.iter().map(|s| s ^ m).collect();
+            span.extend(more);
+        }
+    }
+    let closed = span.iter().all(|b| t.contains(*b));
+    let none = if closed {
+        "`None` when `A` has no inverse"
+    } else {
+        "`None` when `A` has no inverse, or when its inverse has blades outside this type (the \
+         type is not closed under the geometric product: convert to a larger type first)"
+    };
+    format!(
+        "The inverse `A⁻¹` with `A A⁻¹ = A⁻¹ A = 1`, checked: {none}. For floats, `Some` means \
+         the products equal 1 up to the rounding error of computing them (see \
+         `ga_core::inverse` for the exact tolerance), and non-finite input gives `None`. Tries \
+         the versor formula first (see [`versor_inverse`](Self::versor_inverse)), then Gaussian \
+         elimination; slower than `versor_inverse`, which is enough when `A` is known to be a \
+         versor."
+    )
+}
+
 /// Products, sums and sandwiches of one ordered pair of types.
 fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let ring = ring();
@@ -509,8 +549,8 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let lhs = quote!(self);
     let rhs = quote!(rhs);
     let mut items = Vec::new();
-    for kind in Product::ALL {
-        let model = alg.bilinear(kind, &ta.blades, &tb.blades);
+    for spec in &PRODUCTS {
+        let model = alg.bilinear(spec.kind, &ta.blades, &tb.blades);
         let ty = out_ty(alg, model.output);
         let body = bilinear_body(
             alg,
@@ -519,18 +559,17 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
             (&lhs, Output::Type(a)),
             (&rhs, Output::Type(b)),
         );
-        let (trait_name, method) = match kind {
-            Product::Geometric => ("Geometric", "geometric"),
-            Product::Wedge => ("Wedge", "wedge"),
-            Product::LeftContraction => ("LeftContraction", "left_contraction"),
-            Product::RightContraction => ("RightContraction", "right_contraction"),
-            Product::ScalarProduct => ("ScalarProduct", "scalar_product"),
-            Product::Regressive => ("Regressive", "regressive"),
-        };
-        let trait_ident = format_ident!("{trait_name}");
-        let method = format_ident!("{method}");
+        let trait_ident = format_ident!("{}", spec.trait_name);
+        let method = format_ident!("{}", spec.method);
         let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
-        let doc = format!("{terms} multiplications.");
+        let out_name = match model.output {
+            Output::Scalar => "scalar".to_string(),
+            Output::Type(i) => alg.types[i].name.to_string(),
+        };
+        let doc = format!(
+            "{} `{an} {} {bn} → {out_name}`, {terms} multiplications.",
+            spec.title, spec.symbol
+        );
         items.push(quote! {
             impl<T: #ring> ::ga_core::ops::#trait_ident<#bn<T>> for #an<T> {
                 type Output = #ty;
@@ -539,19 +578,19 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 fn #method(&self, rhs: &#bn<T>) -> #ty { #body }
             }
         });
-        let op = match kind {
-            Product::Geometric => Some(("Mul", "mul")),
-            Product::Wedge => Some(("BitXor", "bitxor")),
-            Product::LeftContraction => Some(("BitOr", "bitor")),
-            Product::Regressive => Some(("BitAnd", "bitand")),
-            _ => None,
-        };
-        if let Some((op_trait, op_method)) = op {
+        if let Some((op_trait, op_method, op_symbol)) = spec.operator {
             let op_trait = format_ident!("{op_trait}");
             let op_method = format_ident!("{op_method}");
+            let op_doc = format!(
+                "`{an} {op_symbol} {bn}`: the {} (`{an} {} {bn} → {out_name}`, {terms} \
+                 multiplications).",
+                spec.title.to_lowercase(),
+                spec.symbol
+            );
             items.push(quote! {
                 impl<T: #ring> ::core::ops::#op_trait<#bn<T>> for #an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: #bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(&self, &rhs)
@@ -559,6 +598,7 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 }
                 impl<T: #ring> ::core::ops::#op_trait<&#bn<T>> for &#an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: &#bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(self, rhs)

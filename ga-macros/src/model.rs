@@ -54,6 +54,8 @@ pub enum Product {
 }
 
 impl Product {
+    /// Every product, in the order of [`PRODUCTS`] (kept for emitters that need only the kinds).
+    #[allow(dead_code)]
     pub const ALL: [Product; 6] = [
         Product::Geometric,
         Product::Wedge,
@@ -63,6 +65,73 @@ impl Product {
         Product::Regressive,
     ];
 }
+
+/// How one product is named and written in the generated Rust: its `ga_core::ops` trait and
+/// method, its operator (`core::ops` trait, method, symbol) if it has one, and the words and
+/// symbol of its documentation.
+pub struct ProductSpec {
+    pub kind: Product,
+    /// For documentation: "Outer product".
+    pub title: &'static str,
+    /// For documentation: `∧` in `Vector ∧ Bivector`.
+    pub symbol: &'static str,
+    pub trait_name: &'static str,
+    pub method: &'static str,
+    /// `(trait, method, symbol)` of the operator, e.g. `("BitXor", "bitxor", "^")`.
+    pub operator: Option<(&'static str, &'static str, &'static str)>,
+}
+
+/// The one table of products: every generated product impl and operator comes from here.
+pub const PRODUCTS: [ProductSpec; 6] = [
+    ProductSpec {
+        kind: Product::Geometric,
+        title: "Geometric product",
+        symbol: "*",
+        trait_name: "Geometric",
+        method: "geometric",
+        operator: Some(("Mul", "mul", "*")),
+    },
+    ProductSpec {
+        kind: Product::Wedge,
+        title: "Outer product",
+        symbol: "∧",
+        trait_name: "Wedge",
+        method: "wedge",
+        operator: Some(("BitXor", "bitxor", "^")),
+    },
+    ProductSpec {
+        kind: Product::LeftContraction,
+        title: "Left contraction",
+        symbol: "⌋",
+        trait_name: "LeftContraction",
+        method: "left_contraction",
+        operator: Some(("BitOr", "bitor", "|")),
+    },
+    ProductSpec {
+        kind: Product::RightContraction,
+        title: "Right contraction",
+        symbol: "⌊",
+        trait_name: "RightContraction",
+        method: "right_contraction",
+        operator: None,
+    },
+    ProductSpec {
+        kind: Product::ScalarProduct,
+        title: "Scalar product",
+        symbol: "∗",
+        trait_name: "ScalarProduct",
+        method: "scalar_product",
+        operator: None,
+    },
+    ProductSpec {
+        kind: Product::Regressive,
+        title: "Regressive product",
+        symbol: "∨",
+        trait_name: "Regressive",
+        method: "regressive",
+        operator: Some(("BitAnd", "bitand", "&")),
+    },
+];
 
 /// `sign * lhs_blade * rhs_blade` contributes to an output blade.
 #[derive(Clone, Copy, Debug)]
@@ -98,6 +167,8 @@ pub struct Algebra {
     /// Declared types, then the dense type last.
     pub types: Vec<TypeModel>,
     pub degenerate: bool,
+    /// Outer attributes put on every generated struct (the `attributes` key).
+    pub struct_attributes: Vec<Attribute>,
 }
 
 fn err(span: Span, msg: impl std::fmt::Display) -> syn::Error {
@@ -257,6 +328,7 @@ impl Algebra {
         });
         Ok(Algebra {
             module: decl.name,
+            struct_attributes: decl.attributes,
             degenerate: signature.contains(&0),
             signature,
             basis,

@@ -36,6 +36,8 @@ pub struct Declaration {
     pub types: Vec<TypeDecl>,
     pub types_span: Span,
     pub dense: Option<Ident>,
+    /// `attributes: [#[...], ...]`: outer attributes put on every generated struct.
+    pub attributes: Vec<Attribute>,
 }
 
 impl Parse for Declaration {
@@ -45,6 +47,7 @@ impl Parse for Declaration {
         let mut basis = None;
         let mut types = None;
         let mut dense = None;
+        let mut attributes: Option<Vec<Attribute>> = None;
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
@@ -88,12 +91,18 @@ impl Parse for Declaration {
                     }
                     dense = Some(input.parse::<Ident>()?);
                 }
+                "attributes" => {
+                    if attributes.is_some() {
+                        return Err(duplicate());
+                    }
+                    attributes = Some(parse_attributes(input)?);
+                }
                 other => {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
                             "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
-                             `types`, `dense`"
+                             `types`, `dense`, `attributes`"
                         ),
                     ))
                 }
@@ -123,8 +132,28 @@ impl Parse for Declaration {
             types,
             types_span,
             dense,
+            attributes: attributes.unwrap_or_default(),
         })
     }
+}
+
+/// `[#[a], #[b], ...]`: outer attributes, commas between them optional.
+fn parse_attributes(input: ParseStream) -> syn::Result<Vec<Attribute>> {
+    let content;
+    bracketed!(content in input);
+    let mut attrs = Vec::new();
+    while !content.is_empty() {
+        if !content.peek(Token![#]) {
+            return Err(content.error(
+                "expected an outer attribute such as `#[derive(Debug)]` (attributes: [#[...], ...])",
+            ));
+        }
+        attrs.extend(content.call(Attribute::parse_outer)?);
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
+    }
+    Ok(attrs)
 }
 
 fn parse_signature(input: ParseStream) -> syn::Result<Vec<SignatureEntry>> {

@@ -637,8 +637,8 @@ fn known_inverses() {
 #[test]
 fn errors_are_typed() {
     assert_eq!(
-        Signature::new(&[1, 1, 1, 1, 1, 1, 1]),
-        Err(ReferenceError::TooManyGenerators(7))
+        Signature::new(&[1; 11]),
+        Err(ReferenceError::TooManyGenerators(11))
     );
     assert_eq!(
         Signature::new(&[1, 3]),

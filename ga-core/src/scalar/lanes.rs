@@ -29,9 +29,12 @@
 //! * [`Field::checked_recip`] is `None` only when every lane is zero; a lane that is zero while
 //!   others are not divides to `±inf`/NaN in that lane, as `f64` division does. Check the
 //!   lanes you divide by ([`F64x4::any_zero`]) when that matters.
-//! * [`Field::pivot_score`] is the smallest absolute value over the lanes, so elimination picks
-//!   a pivot good for all lanes where one exists; a pivot zero in some lanes only still divides
-//!   (see above). Per-lane pivoting is not possible with one instruction stream.
+//! * [`Field::pivot_score`] is the largest absolute value over the lanes (`+inf` for a NaN
+//!   lane), so a residual passes the checks of `inverse()` only when it passes in every lane.
+//!   Gaussian elimination (`general_inverse`, and `inverse()` of non-versors) pivots on that
+//!   score: a pivot zero in some lanes only divides to `inf`/NaN there (see above), and then the
+//!   checked `inverse()` returns `None` for the whole batch. Per-lane pivoting is not possible
+//!   with one instruction stream; the straight-line `versor_inverse()` is exact lane by lane.
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -186,11 +189,23 @@ macro_rules! lane_type {
         }
 
         impl Field for $name {
+            /// The largest absolute value over the lanes, `+inf` if a lane is NaN: a residual
+            /// is small only when it is small in every lane (the checked `inverse()` relies on
+            /// this); see the [module documentation](self) for pivoting.
             #[inline]
             fn pivot_score(&self) -> f64 {
-                self.lanes()
-                    .iter()
-                    .fold(f64::INFINITY, |m, x| m.min(x.abs() as f64))
+                self.lanes().iter().fold(0.0f64, |m, x| {
+                    if x.is_nan() {
+                        f64::INFINITY
+                    } else {
+                        m.max(x.abs() as f64)
+                    }
+                })
+            }
+            /// The unit roundoff of the element type.
+            #[inline]
+            fn unit_roundoff() -> f64 {
+                (<$elem>::EPSILON / 2.0) as f64
             }
         }
     };
