@@ -133,3 +133,54 @@ mod mint_conversions {
         assert!(mint::Quaternion::try_from(Rotor::translator([0.0, 1.0, 0.0])).is_err());
     }
 }
+
+#[cfg(feature = "bytemuck")]
+mod bytemuck_casts {
+    use ga_core::cga::{Even, Multivector, Vector};
+    use ga_core::{pga3, vga3};
+
+    #[test]
+    fn layouts_are_the_coefficients_in_canonical_order() {
+        assert_eq!(std::mem::size_of::<Multivector<f64>>(), 32 * 8);
+        assert_eq!(
+            std::mem::align_of::<Even<f32>>(),
+            std::mem::align_of::<f32>()
+        );
+        let coeffs: [f64; 32] = std::array::from_fn(|i| i as f64);
+        let m = Multivector::from_coefficients(coeffs);
+        let bytes: &[u8] = bytemuck::bytes_of(&m);
+        let back: Multivector<f64> = bytemuck::pod_read_unaligned(bytes);
+        assert_eq!(back, m);
+        assert_eq!(bytemuck::cast::<Multivector<f64>, [f64; 32]>(m), coeffs);
+        let vs = vec![Vector::new(1.0, 2.0, 3.0, 4.0, 5.0); 3];
+        let flat: &[f64] = bytemuck::cast_slice(&vs);
+        assert_eq!(flat.len(), 15);
+        assert_eq!(flat[5..10], [1.0, 2.0, 3.0, 4.0, 5.0]);
+        let z: pga3::Motor<f32> = bytemuck::Zeroable::zeroed();
+        assert_eq!(z, pga3::Motor::zero());
+        let r = vga3::Rotor::new(1.0f32, 2.0, 3.0, 4.0);
+        assert_eq!(bytemuck::cast::<_, [f32; 4]>(r), [1.0, 2.0, 3.0, 4.0]);
+        // A misaligned or wrongly sized byte slice is an error, not a panic.
+        let raw = [0u8; 12];
+        assert!(bytemuck::try_cast_slice::<u8, Vector<f64>>(&raw).is_err());
+    }
+}
+
+#[cfg(feature = "serde")]
+mod serde_round_trips {
+    use ga_core::cga::{Bivector, Even, Vector};
+
+    #[test]
+    fn json_uses_blade_names() {
+        let v = Vector::new(1.0, 2.0, 3.0, 4.0, 5.0);
+        let json = serde_json::to_string(&v).unwrap();
+        assert_eq!(json, r#"{"e1":1.0,"e2":2.0,"e3":3.0,"e4":4.0,"e5":5.0}"#);
+        assert_eq!(serde_json::from_str::<Vector<f64>>(&json).unwrap(), v);
+        let b = Bivector::<f64>::zero();
+        let e: Even<f64> = b.exp();
+        let back: Even<f64> = serde_json::from_str(&serde_json::to_string(&e).unwrap()).unwrap();
+        assert_eq!(back, e);
+        // A missing blade is an error.
+        assert!(serde_json::from_str::<Vector<f64>>(r#"{"e1":1.0}"#).is_err());
+    }
+}

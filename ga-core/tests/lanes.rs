@@ -109,7 +109,10 @@ fn lane_semantics() {
     assert!(!q.all_finite());
     assert!(F64x4::zero().checked_recip().is_none());
     assert_eq!(x.pivot_score(), 4.0);
-    assert_eq!(F64x4::from([1.0, f64::NAN, 0.0, 0.0]).pivot_score(), f64::INFINITY);
+    assert_eq!(
+        F64x4::from([1.0, f64::NAN, 0.0, 0.0]).pivot_score(),
+        f64::INFINITY
+    );
     assert_eq!(F32x8::from_i64(3).lanes(), [3.0; 8]);
     assert_ne!(F64x4::splat(f64::NAN), F64x4::splat(f64::NAN));
     // The dense inverse runs on lanes (here the same element in every lane).

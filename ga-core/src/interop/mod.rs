@@ -6,12 +6,18 @@
 //!   feature).
 //! * `mint`: `mint::Vector3`/`Point3`/`Quaternion` ⇄ the same types, for any crate speaking
 //!   `mint`.
-//! * `bytemuck` and `serde` act on the generated types themselves (see `docs/toolkit.md`).
+//! * `bytemuck`: `Pod` and `Zeroable` for every generated type over `f64` and `f32`, so
+//!   slices of multivectors cast to slices of coefficients (GPU buffers, files); see
+//!   `interop::bytemuck` (enabled by the feature).
+//! * `serde`: `Serialize` and `Deserialize` for every generated type (a struct with one field
+//!   per blade, named as the blade: `s`, `e1`, `e12`, …), for any scalar that has them.
 //!
 //! Rotations use the same convention everywhere: the unit quaternion `w + x i + y j + z k`
 //! (rotation by `θ` about the unit axis `a`: `w = cos θ/2`, `(x, y, z) = a sin θ/2`) is the
 //! rotor `w - x e23 + y e13 - z e12`, so that `R v R̃` rotates `v` as `q v q*` does.
 
+#[cfg(feature = "bytemuck")]
+pub mod bytemuck;
 #[cfg(feature = "glam")]
 pub mod glam;
 #[cfg(feature = "mint")]
