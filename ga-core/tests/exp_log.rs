@@ -116,11 +116,11 @@ proptest! {
         let b = bivector(c);
         let Some((p, m)) = b.split() else { return Ok(()) };
         prop_assert!(biv_dist(&(p + m), &b) < 1e-9);
-        let pm: Even<f64> = (p * m).into();
-        let mp: Even<f64> = (m * p).into();
+        let pm: Even<f64> = p * m;
+        let mp: Even<f64> = m * p;
         prop_assert!(even_dist(&pm, &mp) < 1e-8);
         for x in [p, m] {
-            let sq: Even<f64> = (x * x).into();
+            let sq: Even<f64> = x * x;
             let mut scalar = Even::zero();
             scalar.s = sq.s;
             prop_assert!(even_dist(&sq, &scalar) < 1e-8, "{x:?}² = {sq:?}");
@@ -209,7 +209,7 @@ fn cga_rotation_by_pi_and_the_branch_cut() {
     let l = r.log().unwrap();
     assert!(even_dist(&l.exp(), &r.into()) < 1e-15);
     // A rotation by π, applied twice, is the rotation by 2π: R² = -1, on the cut.
-    let minus_one: Even<f64> = (r * r).into();
+    let minus_one: Even<f64> = r * r;
     assert!(
         minus_one.log().is_none() || {
             // rounding may leave a tiny bivector part: then any answer must still exponentiate back

@@ -108,12 +108,12 @@ fn biv_coeffs<T: Clone>(b: &Bivector<T>) -> [T; 10] {
 
 /// The bivector part of `B J`.
 fn times<T: Ring>(b: &Bivector<T>, j: &Quadvector<T>) -> Bivector<T> {
-    even_parts(Even::from(b.geometric(j))).1
+    even_parts(b.geometric(j)).1
 }
 
 /// `(⟨B²⟩₀, ⟨B²⟩₄)`.
 fn square<T: Ring>(b: &Bivector<T>) -> (T, Quadvector<T>) {
-    let (s, _, q) = even_parts(Even::from(b.geometric(b)));
+    let (s, _, q) = even_parts(b.geometric(b));
     (s, q)
 }
 
@@ -265,17 +265,17 @@ impl<T: Elementary> Even<T> {
         let ninv = center::recip(kind, &center::sqrt(kind, &n2)?)?;
         let one_plus = even_from(T::one() + c0, w, cq);
         let (ns, nq) = scalar_quad(&ninv, &unit);
-        let q = Even::from(one_plus.geometric(&even_from(ns, Bivector::zero(), nq)));
+        let q = one_plus.geometric(&even_from(ns, Bivector::zero(), nq));
         Some(q.scale(&lambda.sqrt()))
     }
 
     /// `V / |V|` as `(⟨V̂⟩₀, ⟨V̂⟩₄, ⟨V̂⟩₂)`, `None` unless `V` is a versor up to rounding.
     fn normalized_parts(&self) -> Option<(T, Quadvector<T>, Bivector<T>)> {
         let n = self.norm_squared();
-        if !(n > T::zero()) || !n.is_finite() {
+        if n <= T::zero() || !n.is_finite() {
             return None;
         }
-        let (_, _, vv4) = even_parts(Even::from(self.geometric(&self.reverse())));
+        let (_, _, vv4) = even_parts(self.geometric(&self.reverse()));
         let (s, b, q) = even_parts(self.clone());
         let scale = versor_size2(&s, &q, &b);
         if !quad_coeffs(&vv4)
@@ -387,7 +387,7 @@ impl<T: Elementary> Rotor<T> {
         let n2 = axis
             .iter()
             .fold(T::zero(), |a, x| a + x.clone() * x.clone());
-        if !(n2 > T::zero()) || !n2.is_finite() {
+        if n2 <= T::zero() || !n2.is_finite() {
             return None;
         }
         let half = angle * (T::one() / T::from_i64(2));
@@ -413,7 +413,7 @@ impl<T: Elementary> Rotor<T> {
     /// `down(D up(x) D̃) = factor · x`. `None` unless `factor` is positive and finite.
     /// (`e45 = n_inf ∧ n_0`.)
     pub fn dilator(factor: T) -> Option<Self> {
-        if !(factor > T::zero()) || !factor.is_finite() {
+        if factor <= T::zero() || !factor.is_finite() {
             return None;
         }
         let g = -(factor.ln() * (T::one() / T::from_i64(2)));

@@ -29,7 +29,7 @@ fn times_i<T: Ring>(b: &Bivector<T>) -> Bivector<T> {
 
 /// `(⟨X²⟩₀, ⟨X²⟩₄)` for a bivector `X`.
 fn square<T: Ring>(b: &Bivector<T>) -> Z<T> {
-    let sq = Motor::from(b.geometric(b));
+    let sq = b.geometric(b);
     Z::new(sq.s, sq.e0123)
 }
 
@@ -84,7 +84,7 @@ impl<T: Elementary> Motor<T> {
             w.e23,
             c.b,
         );
-        let times_i = Motor::from(one_plus.geometric(&Pseudoscalar::new(T::one())));
+        let times_i = one_plus.geometric(&Pseudoscalar::new(T::one()));
         let k = lambda.sqrt();
         Some((one_plus.scale(&ninv.a) + times_i.scale(&ninv.b)).scale(&k))
     }
@@ -92,11 +92,11 @@ impl<T: Elementary> Motor<T> {
     /// `M / |M|` as `(⟨M̂⟩₀ + ⟨M̂⟩₄, ⟨M̂⟩₂)`, `None` unless `M` is a motor up to rounding.
     fn normalized_parts(&self) -> Option<(Z<T>, Bivector<T>)> {
         let n = self.norm_squared();
-        if !(n > T::zero()) || !n.is_finite() {
+        if n <= T::zero() || !n.is_finite() {
             return None;
         }
         // M M̃ = n + m e0123; m = 0 for motors.
-        let mm = Motor::from(self.geometric(&self.reverse()));
+        let mm = self.geometric(&self.reverse());
         let scale = n.clone()
             + n.sqrt() * (self.e01.abs() + self.e02.abs() + self.e03.abs() + self.e0123.abs());
         if !center::negligible(&mm.e0123, &scale) {

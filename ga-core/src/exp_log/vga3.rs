@@ -99,7 +99,7 @@ impl<T: Elementary> Rotor<T> {
     /// and finite.
     fn normalized_parts(&self) -> Option<(T, Bivector<T>)> {
         let n = self.norm_squared();
-        if !(n > T::zero()) || !n.is_finite() {
+        if n <= T::zero() || !n.is_finite() {
             return None;
         }
         let inv = T::one() / n.sqrt();

@@ -112,7 +112,7 @@ pub(crate) fn motor_from_rotation_translation(xyzw: [f64; 4], t: [f64; 3]) -> cg
     let [x, y, z, w] = xyzw;
     let r = cga_rotor_from_xyzw(x, y, z, w);
     let tr = cga::Rotor::translator(t);
-    cga::Even::from(tr * r)
+    tr * r
 }
 
 /// The unit quaternion `(x, y, z, w)` and translation `t` of a rigid conformal motor
@@ -134,16 +134,16 @@ pub(crate) fn rotation_translation_of_motor(
     }
     let r = vga3::Rotor::new(m.s, m.e12, m.e13, m.e23);
     let n = r.norm_squared();
-    if !(n > 0.0) {
+    if n <= 0.0 || n.is_nan() {
         return Err(InteropError::NotRigid("the rotation part is zero"));
     }
     // Y = t R (times λ), from Y e4 = -2 (eᵢ4 and e1234 parts).
     let y = vga3::Odd::new(-2.0 * m.e14, -2.0 * m.e24, -2.0 * m.e34, -2.0 * m.e1234);
-    let t: vga3::Odd<f64> = y.geometric(&r.reverse()).into();
+    let t = y.geometric(&r.reverse());
     let t = [t.e1 / n, t.e2 / n, t.e3 / n];
-    let rebuilt = cga::Multivector::from(cga::Even::from(
+    let rebuilt = cga::Multivector::from(
         cga::Rotor::translator(t) * cga_rotor_from_xyzw(-m.e23, m.e13, -m.e12, m.s),
-    ))
+    )
     .coefficients();
     let size = coeffs.iter().fold(0.0f64, |a, c| a.max(c.abs()));
     let off = coeffs
