@@ -7,16 +7,21 @@ use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::blade::{self, Blade};
-use crate::model::{Algebra, Output, Product, Term, TypeModel, PRODUCTS};
+use crate::model::{Algebra, BladeSet, Output, Product, Term, TypeModel, PRODUCTS};
 
 /// Everything the declaration expands to.
 pub fn emit(alg: &Algebra) -> TokenStream {
     let mut items = vec![emit_module_items(alg)];
-    for (i, t) in alg.types.iter().enumerate() {
-        items.push(emit_type(alg, i, t));
+    let emitted: Vec<usize> = (0..alg.types.len())
+        .filter(|&i| alg.types[i].emitted)
+        .collect();
+    for &i in &emitted {
+        items.push(emit_type(alg, i, &alg.types[i]));
     }
-    for a in 0..alg.types.len() {
-        for b in 0..alg.types.len() {
+    // Only pairs of generated types; an operation whose result no generated type holds is
+    // skipped (possible only without a dense type).
+    for &a in &emitted {
+        for &b in &emitted {
             items.push(emit_pair(alg, a, b));
         }
     }
@@ -130,7 +135,10 @@ fn emit_module_items(alg: &Algebra) -> TokenStream {
     let sig_doc = format!("Squares of the generators of `{label}`, in basis order.");
     let ring = ring();
     let blade_fns = alg.canonical.iter().skip(1).map(|&b| {
-        let out = alg.resolve(1u64 << b);
+        let out = alg.resolve(BladeSet::single(b));
+        if !alg.is_emitted(out) {
+            return TokenStream::new();
+        }
         let ty = out_ty(alg, out);
         let name = format_ident!("{}", alg.field_names[b as usize]);
         let mut exprs = BTreeMap::new();
@@ -197,6 +205,9 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
 
     let blade_map_fn = |fname: Ident, doc: &str, f: &dyn Fn(Blade) -> (i32, Blade)| {
         let map = alg.blade_map(&t.blades, f);
+        if !alg.is_emitted(map.output) {
+            return TokenStream::new();
+        }
         let ty = out_ty(alg, map.output);
         let exprs = map
             .entries
@@ -232,7 +243,26 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
     let undual = blade_map_fn(format_ident!("undual"), undual_doc, &|b| {
         alg.undual_blade(b)
     });
-    let dual_ty = out_ty(alg, alg.blade_map(&t.blades, |b| alg.dual_blade(b)).output);
+    let dual_out = alg.blade_map(&t.blades, |b| alg.dual_blade(b)).output;
+    let dual_ty = out_ty(alg, dual_out);
+    let not_impls = if alg.is_emitted(dual_out) {
+        quote! {
+            impl<T: #ring> ::core::ops::Not for #name<T> {
+                type Output = #dual_ty;
+                /// The dual.
+                #[inline]
+                fn not(self) -> #dual_ty { self.dual() }
+            }
+            impl<T: #ring> ::core::ops::Not for &#name<T> {
+                type Output = #dual_ty;
+                /// The dual.
+                #[inline]
+                fn not(self) -> #dual_ty { self.dual() }
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
 
     let grades = t.blades.iter().map(|&b| {
         let fi = field_ident(alg, b);
@@ -296,6 +326,8 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
                 }
             }
         }
+    } else if !alg.types[alg.dense()].emitted {
+        TokenStream::new()
     } else {
         let dense = &alg.types[alg.dense()].name;
         quote! {
@@ -318,7 +350,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         }
     };
     let subset_conversions = alg.types.iter().enumerate().filter_map(|(j, other)| {
-        if j == index || other.is_dense || t.set & other.set != t.set {
+        if j == index || other.is_dense || !t.set.is_subset_of(&other.set) {
             return None;
         }
         let oname = &other.name;
@@ -440,18 +472,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
             #[inline]
             fn neg(self) -> #name<T> { #name { #(#fields: -self.#fields.clone()),* } }
         }
-        impl<T: #ring> ::core::ops::Not for #name<T> {
-            type Output = #dual_ty;
-            /// The dual.
-            #[inline]
-            fn not(self) -> #dual_ty { self.dual() }
-        }
-        impl<T: #ring> ::core::ops::Not for &#name<T> {
-            type Output = #dual_ty;
-            /// The dual.
-            #[inline]
-            fn not(self) -> #dual_ty { self.dual() }
-        }
+        #not_impls
         impl<T: #ring> ::core::ops::Mul<T> for #name<T> {
             type Output = Self;
             #[inline]
@@ -551,6 +572,9 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let mut items = Vec::new();
     for spec in &PRODUCTS {
         let model = alg.bilinear(spec.kind, &ta.blades, &tb.blades);
+        if !alg.is_emitted(model.output) {
+            continue;
+        }
         let ty = out_ty(alg, model.output);
         let body = bilinear_body(
             alg,
@@ -617,7 +641,7 @@ fn emit_sum(alg: &Algebra, a: usize, b: usize, subtract: bool) -> TokenStream {
     let ring = ring();
     let (ta, tb) = (&alg.types[a], &alg.types[b]);
     let (an, bn) = (&ta.name, &tb.name);
-    let out = alg.resolve(ta.set | tb.set);
+    let out = alg.resolve(ta.set.union(&tb.set));
     // Sums of non-scalar types never resolve to `T`; a scalar-only pair cannot be declared
     // without a blade list `[1]`, which resolves to the declared type too.
     let out = match out {
@@ -628,6 +652,9 @@ fn emit_sum(alg: &Algebra, a: usize, b: usize, subtract: bool) -> TokenStream {
         }),
         o => o,
     };
+    if !alg.is_emitted(out) {
+        return TokenStream::new();
+    }
     let ty = out_ty(alg, out);
     let make = |owned: bool| {
         let exprs = alg
@@ -685,6 +712,9 @@ fn emit_sandwich(alg: &Algebra, v: usize, x: usize) -> TokenStream {
     let (tv, tx) = (&alg.types[v], &alg.types[x]);
     let (vn, xn) = (&tv.name, &tx.name);
     let first = alg.bilinear(Product::Geometric, &tv.blades, &tx.blades);
+    if !alg.is_emitted(first.output) {
+        return TokenStream::new();
+    }
     let p_blades: Vec<Blade> = first.outputs.iter().map(|(b, _)| *b).collect();
     let outputs = alg.sandwich_terms(&p_blades, &tv.blades, &tx.blades);
     let p = quote!(p);

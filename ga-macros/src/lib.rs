@@ -31,6 +31,7 @@
 
 mod blade;
 mod emit;
+mod errors;
 mod model;
 mod parse;
 
