@@ -50,8 +50,10 @@ pub enum InteropError {
     },
 }
 
+#[cfg(any(feature = "glam", feature = "mint"))]
 use crate::cga;
 
+#[cfg(any(feature = "glam", feature = "mint"))]
 /// The rotor of the unit quaternion `(x, y, z, w)` (see the [module](self) convention).
 pub(crate) fn cga_rotor_from_xyzw(x: f64, y: f64, z: f64, w: f64) -> cga::Rotor<f64> {
     let mut r = cga::Rotor::zero();
@@ -62,6 +64,7 @@ pub(crate) fn cga_rotor_from_xyzw(x: f64, y: f64, z: f64, w: f64) -> cga::Rotor<
     r
 }
 
+#[cfg(any(feature = "glam", feature = "mint"))]
 /// `(x, y, z, w)` of a conformal rotor that is a rotation about the origin.
 pub(crate) fn xyzw_from_cga_rotor(r: &cga::Rotor<f64>) -> Result<[f64; 4], InteropError> {
     for (blade, value) in [
@@ -80,6 +83,7 @@ pub(crate) fn xyzw_from_cga_rotor(r: &cga::Rotor<f64>) -> Result<[f64; 4], Inter
     Ok([-r.e23, r.e13, -r.e12, r.s])
 }
 
+#[cfg(feature = "glam")]
 /// Checks that the columns form a rotation matrix (relative tolerance 1e-9).
 pub(crate) fn check_rotation(cols: [[f64; 3]; 3]) -> Result<(), InteropError> {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -107,6 +111,7 @@ pub(crate) fn check_rotation(cols: [[f64; 3]; 3]) -> Result<(), InteropError> {
     }
 }
 
+#[cfg(feature = "glam")]
 /// The motor `T(t) R` (rotation `R` about the origin, then translation by `t`).
 pub(crate) fn motor_from_rotation_translation(xyzw: [f64; 4], t: [f64; 3]) -> cga::Even<f64> {
     let [x, y, z, w] = xyzw;
@@ -115,6 +120,7 @@ pub(crate) fn motor_from_rotation_translation(xyzw: [f64; 4], t: [f64; 3]) -> cg
     tr * r
 }
 
+#[cfg(feature = "glam")]
 /// The unit quaternion `(x, y, z, w)` and translation `t` of a rigid conformal motor
 /// `M = λ T(t) R`, `λ > 0`.
 ///
