@@ -43,6 +43,8 @@ ga_macros::algebra! {
         Odd: grades 1 3 5,
     },
     dense: Multivector,
+    // Optional interop features of ga-core (see docs/toolkit.md).
+    attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]],
 }
 
 /// The point at infinity `n_inf = e4 + e5` (the thesis's `n`).

@@ -5,12 +5,22 @@
 //!   Implemented by `f64`, `f32`, exact rationals, intervals, symbolic polynomials.
 //! * [`Field`]: adds division (inverses, normalised sandwiches).
 //! * [`Real`]: adds ordering, square roots and finiteness (norms, geometry).
+//! * [`Elementary`]: adds sine, cosine, exponential, logarithm (exponentials and logarithms of
+//!   versors).
+//!
+//! [`lanes`] has SIMD lane types (`F64x4`, `F32x8`) that are rings and fields, so the generated
+//! products run on several multivectors at once.
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive};
+
+mod elementary;
+pub mod lanes;
+
+pub use elementary::Elementary;
 
 /// A commutative ring with unit: the coefficients of generated multivectors.
 ///

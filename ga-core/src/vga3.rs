@@ -26,4 +26,6 @@ ga_macros::algebra! {
         Odd: grades 1 3,
     },
     dense: Multivector,
+    // Optional interop features of ga-core (see docs/toolkit.md).
+    attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]],
 }
