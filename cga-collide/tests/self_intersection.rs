@@ -157,6 +157,7 @@ proptest! {
         let pairs = query::self_intersections(&c);
         prop_assert_eq!(&pairs, &oracle_pairs(&mesh));
         prop_assert_eq!(query::self_intersects(&c), !pairs.is_empty());
+        prop_assert_eq!(&query::self_intersections_brute(&c), &pairs);
     }
 }
 

@@ -42,7 +42,7 @@ pub use distance::{
     exact_distance_triangle_triangle, exact_mesh_distance, mesh_distance, Distance, ExactDistance,
 };
 pub use containment::{point_in_solid, ray_crosses_triangle};
-pub use self_intersection::{self_intersections, self_intersects};
+pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};
 pub use intersects::{
     intersects_ball_ball, intersects_segment_ball, intersects_segment_segment,
     intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,

@@ -179,3 +179,22 @@ pub fn self_intersects(mesh: &Collider) -> bool {
     })
     .is_break()
 }
+
+/// [`self_intersections`] by brute force over every pair (in parallel, no hierarchy, no box
+/// filter): the baseline of the benchmarks and tests.
+pub fn self_intersections_brute(mesh: &Collider) -> Vec<(u32, u32)> {
+    let n = mesh.mesh().num_triangles() as u32;
+    let tri = |i: u32| {
+        let [a, b, c] = mesh.mesh().triangle(i as usize);
+        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
+    };
+    let mut out: Vec<(u32, u32)> = (0..n)
+        .into_par_iter()
+        .flat_map_iter(|i| {
+            let ti = tri(i);
+            (i + 1..n).filter_map(move |j| meet_elsewhere(&ti, &tri(j)).then_some((i, j)))
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
