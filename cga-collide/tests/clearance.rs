@@ -1,11 +1,11 @@
 //! Exact clearance (`dist(a, b) <= c`) against the exact rational brute-force oracle, including
 //! pairs at exactly distance `c` and the `f64` just below it.
 
+use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
 use cga_collide::query::{self, Collider, WithinDistance};
 use cga_collide::testing::oracle::{self, Shape};
 use cga_collide::{Ball, Segment, Sphere, TriMesh, Triangle};
-use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
 use proptest::prelude::*;
 
 /// Small integers (many exact touches, parallel and coplanar configurations) or halves.

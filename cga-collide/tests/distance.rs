@@ -50,7 +50,7 @@ fn dist2(a: &Point3<f64>, b: &Point3<f64>) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(24))]
 
     #[test]
     fn segment_segment(a in segment(), b in segment()) {
@@ -98,7 +98,7 @@ fn brute_exact(a: &Collider, b: &Collider) -> Rational {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4))]
+    #![proptest_config(ProptestConfig::with_cases(2))]
 
     #[test]
     fn mesh_distance_within_its_bound(
@@ -142,6 +142,14 @@ fn bunny_against_a_moved_copy_agrees_with_brute_force_pair() {
     let d = query::mesh_distance(&a, &b).unwrap();
     assert!(d.distance > 0.0 && d.error_bound < 1e-12 * d.distance.max(1.0));
     // No pair is closer than the certified lower end, and some pair is within the upper end.
-    assert!(!query::meshes_within_distance(&a, &b, d.distance - 2.0 * d.error_bound));
-    assert!(query::meshes_within_distance(&a, &b, d.distance + d.error_bound));
+    assert!(!query::meshes_within_distance(
+        &a,
+        &b,
+        d.distance - 2.0 * d.error_bound
+    ));
+    assert!(query::meshes_within_distance(
+        &a,
+        &b,
+        d.distance + d.error_bound
+    ));
 }

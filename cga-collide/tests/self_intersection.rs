@@ -136,7 +136,12 @@ fn lattice_mesh() -> impl Strategy<Value = TriMesh> {
         proptest::collection::vec((0u32..8, 0u32..8, 0u32..8), 2..10),
     )
         .prop_filter_map("need triangles", |(mut v, t)| {
-            v.sort_by(|a, b| a.coords.as_slice().partial_cmp(b.coords.as_slice()).unwrap());
+            v.sort_by(|a, b| {
+                a.coords
+                    .as_slice()
+                    .partial_cmp(b.coords.as_slice())
+                    .unwrap()
+            });
             v.dedup();
             let n = v.len() as u32;
             let tris: Vec<[u32; 3]> = t
@@ -195,7 +200,16 @@ fn adjacent_triangles() {
     // A duplicated triangle.
     check(vec![[0, 1, 2], [2, 1, 0]], vec![(0, 1)]);
     // Shared vertex, the second triangle folded through the first.
-    let w = vec![p(0., 0., 0.), p(2., 0., 0.), p(0., 2., 0.), p(1., 1., 1.), p(1., 0.5, -1.)];
+    let w = vec![
+        p(0., 0., 0.),
+        p(2., 0., 0.),
+        p(0., 2., 0.),
+        p(1., 1., 1.),
+        p(1., 0.5, -1.),
+    ];
     let mesh = TriMesh::new(w, vec![[0, 1, 2], [0, 3, 4]]).unwrap();
-    assert_eq!(query::self_intersections(&Collider::new(mesh)), vec![(0, 1)]);
+    assert_eq!(
+        query::self_intersections(&Collider::new(mesh)),
+        vec![(0, 1)]
+    );
 }

@@ -73,7 +73,11 @@ pub(crate) fn run(args: DistanceArgs) -> Result<()> {
             "distance {} ± {:.3e} (certified) between triangle {i} of {} and {j} of {} ({millis:.3} ms)",
             d.distance, d.error_bound, args.a, args.b
         );
-        println!("witness A {:?}\nwitness B {:?}", w(&d.witness_a), w(&d.witness_b));
+        println!(
+            "witness A {:?}\nwitness B {:?}",
+            w(&d.witness_a),
+            w(&d.witness_b)
+        );
         if let Some(e) = &exact {
             println!("exact squared distance {}", e.distance2);
         }

@@ -44,7 +44,15 @@ fn distance_between_cubes() {
     let dir = temp_dir("distance");
     let c = cube(&dir);
     let v = json(&cga(
-        &["distance", &c, &c, "--translate", "1.5,0.25,0", "--json", "--exact"],
+        &[
+            "distance",
+            &c,
+            &c,
+            "--translate",
+            "1.5,0.25,0",
+            "--json",
+            "--exact",
+        ],
         &dir,
     ));
     let d = v["distance"].as_f64().unwrap();
@@ -67,7 +75,14 @@ fn collide_clearance_contacts_and_class() {
         json(&cga(&args, &dir))
     };
     // A gap of exactly 0.5: within 0.5, not within 0.49.
-    let v = run(&["--translate", "1.5,0,0", "--clearance", "0.5", "--pairs", "p.txt"]);
+    let v = run(&[
+        "--translate",
+        "1.5,0,0",
+        "--clearance",
+        "0.5",
+        "--pairs",
+        "p.txt",
+    ]);
     assert!(v["pairs"].as_u64().unwrap() > 0);
     assert_eq!(v["contact"], "disjoint");
     let listed = std::fs::read_to_string(dir.join("p.txt")).unwrap();
@@ -95,9 +110,16 @@ fn self_intersect_json_and_pairs() {
     assert_eq!(v["closed"], true);
     // Two triangles folded onto each other across their shared edge.
     let fold = dir.join("fold.off");
-    std::fs::write(&fold, "OFF\n4 2 0\n0 0 0\n2 0 0\n1 1 0\n1 2 0\n3 0 1 2\n3 1 0 3\n").unwrap();
+    std::fs::write(
+        &fold,
+        "OFF\n4 2 0\n0 0 0\n2 0 0\n1 1 0\n1 2 0\n3 0 1 2\n3 1 0 3\n",
+    )
+    .unwrap();
     let fold = fold.display().to_string();
-    let v = json(&cga(&["self-intersect", &fold, "--json", "--pairs", "s.txt"], &dir));
+    let v = json(&cga(
+        &["self-intersect", &fold, "--json", "--pairs", "s.txt"],
+        &dir,
+    ));
     assert_eq!(v["pairs"], 1);
     assert_eq!(std::fs::read_to_string(dir.join("s.txt")).unwrap(), "0 1\n");
 }

@@ -231,9 +231,8 @@ fn centres_apart(c1: &P3, c2: &P3, big: f64, small: f64, c: f64) -> bool {
     if K::sign::<ReachSign, 3>(&[big, -small, -c]) != Greater {
         return true;
     }
-    K::sign::<CentreDistance, 9>(&[
-        c1[0], c1[1], c1[2], c2[0], c2[1], c2[2], big, -small, -c,
-    ]) != Less
+    K::sign::<CentreDistance, 9>(&[c1[0], c1[1], c1[2], c2[0], c2[1], c2[2], big, -small, -c])
+        != Less
 }
 
 // ---------------------------------------------------------------- the trait

@@ -232,7 +232,10 @@ fn shape_of(mut pts: Vec<Q3>) -> ContactGeometry {
     };
     // Keep only the corners (drop points strictly inside a segment between two others).
     let between = |x: &Q3, y: &Q3, z: &Q3| {
-        x != y && x != z && is_zero(&cross(&sub(y, x), &sub(z, x))) && dot(&sub(y, x), &sub(z, x)).is_negative()
+        x != y
+            && x != z
+            && is_zero(&cross(&sub(y, x), &sub(z, x)))
+            && dot(&sub(y, x), &sub(z, x)).is_negative()
     };
     let corners: Vec<Q3> = pts
         .iter()
@@ -306,7 +309,11 @@ impl Contact {
 /// the sum of `orient3d(0, a, b, c)` with a running error bound, exactly when uncertain.
 fn orientation(c: &Collider) -> Ordering {
     let mesh = c.mesh();
-    let o = mesh.vertices().first().copied().unwrap_or_else(Point3::origin);
+    let o = mesh
+        .vertices()
+        .first()
+        .copied()
+        .unwrap_or_else(Point3::origin);
     let term = |i: usize| {
         let [a, b, d] = mesh.triangle(i);
         [o, a, b, d].map(|p| [p.x, p.y, p.z])
@@ -337,9 +344,8 @@ fn orientation(c: &Collider) -> Ordering {
 fn strictly_inside(x: &Q3, t: &[Q3; 3]) -> bool {
     let n = cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]));
     !is_zero(&n)
-        && (0..3).all(|i| {
-            dot(&cross(&sub(&t[(i + 1) % 3], &t[i]), &sub(x, &t[i])), &n).is_positive()
-        })
+        && (0..3)
+            .all(|i| dot(&cross(&sub(&t[(i + 1) % 3], &t[i]), &sub(x, &t[i])), &n).is_positive())
 }
 
 /// Whether the contact of triangle `i` of `a` and `j` of `b` shows interior overlap.

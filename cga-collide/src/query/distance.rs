@@ -130,8 +130,12 @@ fn point_triangle<F: Real>(t: &[V<F>; 3], p: &V<F>) -> V<F> {
 /// The nearest points of segments `ab` and `cd`.
 fn segment_segment<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Near<F> {
     let mut best: Option<Near<F>> = None;
-    for (p, s0, s1, first) in [(a, c, d, true), (b, c, d, true), (c, a, b, false), (d, a, b, false)]
-    {
+    for (p, s0, s1, first) in [
+        (a, c, d, true),
+        (b, c, d, true),
+        (c, a, b, false),
+        (d, a, b, false),
+    ] {
         let q = point_segment(s0, s1, p);
         let d2 = dist2(p, &q);
         keep(
@@ -397,7 +401,10 @@ pub fn distance_triangle_triangle(a: &Triangle, b: &Triangle) -> Distance {
 /// The exact squared distance and witnesses of two closed segments.
 pub fn exact_distance_segment_segment(a: &Segment, b: &Segment) -> ExactDistance {
     let v = |p: &Point3<f64>| qv(&pt(p));
-    exact(segment_segment(&v(a.a()), &v(a.b()), &v(b.a()), &v(b.b())), None)
+    exact(
+        segment_segment(&v(a.a()), &v(a.b()), &v(b.a()), &v(b.b())),
+        None,
+    )
 }
 
 /// The exact squared distance and witnesses of a closed segment and a closed triangle.

@@ -36,16 +36,16 @@ pub use collider::{Collider, Mode};
 pub use contact::{
     contact_class, contact_geometry, triangle_intersection, Contact, ContactGeometry, ExactPoint,
 };
+pub use containment::{point_in_solid, ray_crosses_triangle};
 pub use distance::{
     distance_segment_segment, distance_segment_triangle, distance_triangle_triangle,
     exact_distance_segment_segment, exact_distance_segment_triangle,
     exact_distance_triangle_triangle, exact_mesh_distance, mesh_distance, Distance, ExactDistance,
 };
-pub use containment::{point_in_solid, ray_crosses_triangle};
-pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};
 pub use intersects::{
     intersects_ball_ball, intersects_segment_ball, intersects_segment_segment,
     intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,
     intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
     IntersectsWith,
 };
+pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};

@@ -153,7 +153,8 @@ pub(crate) fn nearest_pair(
                 }
             }
             _ => {
-                let split_a = !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
+                let split_a =
+                    !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
                 let children = if split_a {
                     let s = a.start as usize;
                     [(s, j), (s + 1, j)]
