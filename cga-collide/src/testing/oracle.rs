@@ -157,7 +157,7 @@ fn rational_hull_distance2(v: &[[Rational; 3]], c: &[Rational; 3]) -> (Rational,
             }
         }
         let d2 = dot(&sub(&x, &c), &sub(&x, &c));
-        if min.as_ref().map_or(true, |m| &d2 < m) {
+        if min.as_ref().is_none_or(|m| &d2 < m) {
             min = Some(d2);
         }
     }
