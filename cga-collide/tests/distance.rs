@@ -89,7 +89,7 @@ fn brute_exact(a: &Collider, b: &Collider) -> Rational {
     for i in 0..a.mesh().num_triangles() {
         for j in 0..b.mesh().num_triangles() {
             let d = oracle::hulls_distance2(&a.mesh().triangle(i), &b.mesh().triangle(j));
-            if best.as_ref().map_or(true, |b| &d < b) {
+            if best.as_ref().is_none_or(|b| &d < b) {
                 best = Some(d);
             }
         }

@@ -87,7 +87,7 @@ type Near<F> = (F, V<F>, V<F>);
 
 #[inline(always)]
 fn keep<F: Real>(best: &mut Option<Near<F>>, c: Near<F>) {
-    if best.as_ref().map_or(true, |b| c.0 < b.0) {
+    if best.as_ref().is_none_or(|b| c.0 < b.0) {
         *best = Some(c);
     }
 }
@@ -283,18 +283,6 @@ fn tri(t: &Triangle) -> [V<f64>; 3] {
     [pt(a), pt(b), pt(c)]
 }
 
-fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        x
-    } else if x == 0.0 {
-        f64::from_bits(1)
-    } else if x > 0.0 {
-        f64::from_bits(x.to_bits() + 1)
-    } else {
-        f64::from_bits(x.to_bits() - 1)
-    }
-}
-
 /// Proves `true distance ∈ [d - e, d + e]` with exact clearance tests and returns
 /// `e` (see the module docs). `scale` bounds the magnitude of the coordinates involved.
 /// `upper(c)` proves `distance <= c`; `lower(c)` is false only if `distance > c`.
@@ -309,14 +297,14 @@ fn certify(
         return 0.0;
     }
     let mut e = 32.0 * f64::EPSILON * 0.5 * (scale + d);
-    if !(e > 0.0) {
+    if e.is_nan() || e <= 0.0 {
         e = f64::MIN_POSITIVE;
     }
     loop {
-        let hi = next_up(d + e);
-        let lo = -next_up(-(d - e));
+        let hi = (d + e).next_up();
+        let lo = (d - e).next_down();
         if upper(hi) && (lo < 0.0 || !lower(lo)) {
-            return next_up((hi - d).max(d - lo));
+            return (hi - d).max(d - lo).next_up();
         }
         if !e.is_finite() {
             return f64::INFINITY; // unreachable for finite inputs
@@ -471,14 +459,14 @@ pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
 /// [`mesh_distance`] (found with the exact clearance test), so near-ties are resolved exactly.
 pub fn exact_mesh_distance(a: &Collider, b: &Collider) -> Option<ExactDistance> {
     let d = mesh_distance(a, b)?;
-    let hi = next_up(d.distance + d.error_bound);
+    let hi = (d.distance + d.error_bound).next_up();
     let mut best: Option<(Near<Rational>, u32, u32)> = None;
     for (i, j) in crate::query::clearance::mesh_pairs_within_distance(a, b, hi) {
         let near = triangle_triangle(
             &mesh_tri(a, i).map(|p| qv(&p)),
             &mesh_tri(b, j).map(|p| qv(&p)),
         );
-        if best.as_ref().map_or(true, |(b, _, _)| near.0 < b.0) {
+        if best.as_ref().is_none_or(|(b, _, _)| near.0 < b.0) {
             best = Some((near, i, j));
         }
     }
