@@ -98,7 +98,7 @@ struct CollideArgs {
     repeat: u32,
     /// Count (in "pairs") and list (with --pairs) the triangle pairs within this distance
     /// instead of the intersecting ones (exact; distance exactly C counts).
-    #[arg(long, value_name = "C")]
+    #[arg(long, value_name = "C", allow_hyphen_values = true)]
     clearance: Option<f64>,
     /// Write the exact intersection of every intersecting triangle pair (`i j` then the
     /// corners as `x y z` triples; a point, a segment or a polygon).
