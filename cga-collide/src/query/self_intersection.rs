@@ -38,7 +38,7 @@ use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::parallel::*;
 use crate::query::proximity::for_each_self_pair;
 use crate::query::{Collider, Intersects};
-use crate::shape::Triangle;
+use crate::shape::{Segment, Triangle};
 
 type P3 = [f64; 3];
 
@@ -70,21 +70,42 @@ fn extremes(p: &[P3; 3]) -> (P3, P3) {
     (p[0], p[0])
 }
 
+/// A part of a triangle around a shared vertex: the triangle itself or a segment.
+enum Part {
+    Tri(Triangle),
+    Seg(Segment),
+}
+
+impl Part {
+    fn met_by(&self, s: &Segment) -> bool {
+        match self {
+            Part::Tri(t) => s.intersects(t),
+            Part::Seg(x) => s.intersects(x),
+        }
+    }
+}
+
+fn segment(p: &P3, q: &P3) -> Segment {
+    Segment::new((*p).into(), (*q).into()).unwrap_or_else(|_| unreachable!("finite coordinates"))
+}
+
 /// The parts of triangle `t` around its vertex `v`, each with its far set (where every ray
-/// from `v` into the part leaves it), both as (possibly degenerate) triangles.
-fn pieces(t: &[P3; 3], v: &P3) -> Vec<(Triangle, Triangle)> {
+/// from `v` into the part leaves it: the opposite edge, or the far end point of a degenerate
+/// triangle's segment). Segments and points are kept as segments: the exact tests are fast on
+/// them, while a degenerate triangle's plane would send every side test to exact arithmetic.
+fn pieces(t: &[P3; 3], v: &P3) -> Vec<(Part, Segment)> {
     if !degenerate(t) {
         let others: Vec<&P3> = t.iter().filter(|p| *p != v).collect();
         return vec![(
-            triangle(&t[0], &t[1], &t[2]),
-            triangle(others[0], others[1], others[1]),
+            Part::Tri(triangle(&t[0], &t[1], &t[2])),
+            segment(others[0], others[1]),
         )];
     }
     let (p, q) = extremes(t);
     [p, q]
         .iter()
         .filter(|e| *e != v)
-        .map(|e| (triangle(v, e, e), triangle(e, e, e)))
+        .map(|e| (Part::Seg(segment(v, e)), segment(e, e)))
         .collect()
 }
 
@@ -93,7 +114,7 @@ fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
     let (pp, pq) = (pieces(p, v), pieces(q, v));
     pp.iter().any(|(part_p, far_p)| {
         pq.iter()
-            .any(|(part_q, far_q)| far_p.intersects(part_q) || far_q.intersects(part_p))
+            .any(|(part_q, far_q)| part_q.met_by(far_p) || part_p.met_by(far_q))
     })
 }
 
