@@ -329,7 +329,7 @@ fn orientation(c: &Collider) -> Ordering {
     let mut exact = zero();
     for i in 0..mesh.num_triangles() {
         let x: [f64; 12] = term(i).concat().try_into().unwrap_or([0.0; 12]);
-        exact = exact + Orient3d::eval(&x.map(|v| rational_from_f64(v).unwrap_or_else(zero)));
+        exact += Orient3d::eval(&x.map(|v| rational_from_f64(v).unwrap_or_else(zero)));
     }
     if exact.is_positive() {
         Ordering::Greater
