@@ -3,8 +3,10 @@
 //! `cga` with no arguments runs `cga collide` on built-in meshes (bunny00 vs a moved
 //! armadillo) and writes `collision.png`. See `cga --help`.
 
+mod distance;
 mod experiment_cmd;
 mod render;
+mod self_intersect;
 mod spheretree;
 
 use std::fs;
@@ -15,7 +17,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
+use cga_collide::query::{self, Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Ball, Segment, Sphere, Triangle};
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -40,6 +42,10 @@ enum Command {
     Spheretree(spheretree::SphereTreeArgs),
     /// Run an experiment of the papers (`cga experiment double-spheres`).
     Experiment(experiment_cmd::ExperimentArgs),
+    /// Minimum distance between two meshes, with witnesses and a certified error bound.
+    Distance(distance::DistanceArgs),
+    /// Pairs of triangles of one mesh that meet other than in a shared vertex or edge (exact).
+    SelfIntersect(self_intersect::SelfIntersectArgs),
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -90,6 +96,14 @@ struct CollideArgs {
     /// Time the query this many times and report the best.
     #[arg(long, default_value_t = 3)]
     repeat: u32,
+    /// Count (in "pairs") and list (with --pairs) the triangle pairs within this distance
+    /// instead of the intersecting ones (exact; distance exactly C counts).
+    #[arg(long, value_name = "C", allow_hyphen_values = true)]
+    clearance: Option<f64>,
+    /// Write the exact intersection of every intersecting triangle pair (`i j` then the
+    /// corners as `x y z` triples; a point, a segment or a polygon).
+    #[arg(long, value_name = "FILE")]
+    contacts: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -149,6 +163,8 @@ fn main() -> ExitCode {
         Some(Command::Query(args)) => query(args),
         Some(Command::Spheretree(args)) => spheretree::run(args),
         Some(Command::Experiment(args)) => experiment_cmd::experiment(args),
+        Some(Command::Distance(args)) => distance::run(args),
+        Some(Command::SelfIntersect(args)) => self_intersect::run(args),
         None => collide(CollideArgs {
             a: None,
             b: None,
@@ -160,6 +176,8 @@ fn main() -> ExitCode {
             json: false,
             image: None,
             repeat: 3,
+            clearance: None,
+            contacts: None,
         }),
     };
     match result {
@@ -241,9 +259,17 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     let mode: Mode = args.mode.into();
     let mut best = Duration::MAX;
     let mut pairs = Vec::new();
+    if let Some(c) = args.clearance {
+        if !(c >= 0.0 && c.is_finite()) {
+            bail!("--clearance must be a finite number >= 0, got {c}");
+        }
+    }
     for _ in 0..args.repeat {
         let t = Instant::now();
-        pairs = ca.intersecting_pairs(&cb, mode);
+        pairs = match args.clearance {
+            Some(c) => query::mesh_pairs_within_distance(&ca, &cb, c),
+            None => ca.intersecting_pairs(&cb, mode),
+        };
         best = best.min(t.elapsed());
     }
     let mut best_first = Duration::MAX;
@@ -253,7 +279,12 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         collides = ca.collides(&cb, mode);
         best_first = best_first.min(t.elapsed());
     }
-    if collides == pairs.is_empty() {
+    let touching = if args.clearance.is_some() {
+        !ca.intersecting_pairs(&cb, mode).is_empty()
+    } else {
+        !pairs.is_empty()
+    };
+    if collides != touching {
         bail!("internal inconsistency: first-hit and all-pairs disagree (please report)");
     }
     // With no surface contact, a closed mesh may still lie wholly inside the other.
@@ -274,6 +305,24 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         );
         for (i, j) in &pairs {
             writeln!(out, "{i} {j}")?;
+        }
+        out.flush()?;
+    }
+    // The contact class (exact for closed meshes).
+    let contact = (ca.mesh().is_closed() && cb.mesh().is_closed())
+        .then(|| query::contact_class(&ca, &cb).name());
+    if let Some(path) = &args.contacts {
+        bar.set_message("writing contacts");
+        let mut out = std::io::BufWriter::new(
+            fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
+        );
+        for ((i, j), g) in query::contact_geometry(&ca, &cb) {
+            let corners: Vec<String> = g
+                .points_f64()
+                .iter()
+                .map(|p| format!("{} {} {}", p[0], p[1], p[2]))
+                .collect();
+            writeln!(out, "{i} {j} {}", corners.join(" "))?;
         }
         out.flush()?;
     }
@@ -300,6 +349,8 @@ fn collide(mut args: CollideArgs) -> Result<()> {
             "a_inside_b": a_inside_b,
             "b_inside_a": b_inside_a,
             "solids_collide": collides || a_inside_b || b_inside_a,
+            "contact": contact,
+            "clearance": args.clearance,
             "a": a_spec,
             "b": b_spec,
             "image": args.image.as_ref().map(|p| p.display().to_string()),
@@ -311,10 +362,19 @@ fn collide(mut args: CollideArgs) -> Result<()> {
             ca.mesh().num_triangles(),
             cb.mesh().num_triangles()
         );
-        println!(
-            "collides: {collides}; {} intersecting triangle pairs (exact)",
-            pairs.len()
-        );
+        match args.clearance {
+            Some(c) => println!(
+                "collides: {collides}; {} triangle pairs within distance {c} (exact)",
+                pairs.len()
+            ),
+            None => println!(
+                "collides: {collides}; {} intersecting triangle pairs (exact)",
+                pairs.len()
+            ),
+        }
+        if let Some(contact) = contact {
+            println!("contact: {contact}");
+        }
         if a_inside_b || b_inside_a {
             let (inner, outer) = if a_inside_b {
                 (a_spec, b_spec)

@@ -251,6 +251,118 @@ impl Predicate<12> for Orient3dCga {
     }
 }
 
+// ---------------------------------------------------------------- clearance (distance <= reach)
+//
+// The clearance predicates compare squared distances with the square of a *reach*
+// `r0 + r1 + r2` summed inside the ring (exact in the exact evaluation), so that "within `c`
+// of a ball of radius `r`" is decided without rounding `r + c` in `f64`.
+
+#[inline(always)]
+fn reach2<R: Ring>(x: &[R], i: usize) -> R {
+    let r = x[i].clone() + x[i + 1].clone() + x[i + 2].clone();
+    r.clone() * r
+}
+
+/// `|p - q|² - (r0 + r1 + r2)²`, inputs `[p, q, r0, r1, r2]` (9 numbers): negative or zero
+/// exactly when `p` is within the reach of `q` (for a non-negative reach).
+pub struct CentreDistance;
+impl Predicate<9> for CentreDistance {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 9]) -> R {
+        let d = sub(&v3(x, 0), &v3(x, 3));
+        dot(&d, &d) - reach2(x, 6)
+    }
+}
+
+/// `r0 + r1 + r2`, inputs `[r0, r1, r2]`: the sign of a sum of radii and clearances.
+pub struct ReachSign;
+impl Predicate<3> for ReachSign {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 3]) -> R {
+        x[0].clone() + x[1].clone() + x[2].clone()
+    }
+}
+
+/// [`LineDistance`] with the reach `r0 + r1 + r2`: `|w × d|² - (Σr)²|d|²`, inputs
+/// `[a, b, c, r0, r1, r2]` (12 numbers).
+pub struct LineReach;
+impl Predicate<12> for LineReach {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let d = sub(&v3(x, 3), &a);
+        let w = sub(&v3(x, 6), &a);
+        let m = cross(&w, &d);
+        dot(&m, &m) - reach2(x, 9) * dot(&d, &d)
+    }
+}
+
+/// [`PlaneDistance`] with the reach `r0 + r1 + r2`: `(n·(q - a))² - (Σr)²|n|²`, inputs
+/// `[a, b, c, q, r0, r1, r2]` (15 numbers).
+pub struct PlaneReach;
+impl Predicate<15> for PlaneReach {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 15]) -> R {
+        let a = v3(x, 0);
+        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 6), &a));
+        let h = dot(&n, &sub(&v3(x, 9), &a));
+        h.clone() * h - reach2(x, 12) * dot(&n, &n)
+    }
+}
+
+/// `|n|²` with `n = (b - a) × (d - c)`, inputs `[a, b, c, d]`: zero exactly when the segments
+/// `ab` and `cd` are parallel (or one is a point).
+pub struct CrossNorm2;
+impl Predicate<12> for CrossNorm2 {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 9), &v3(x, 6)));
+        dot(&n, &n)
+    }
+}
+
+/// `((c - a) × (d - c))·n` with `n = (b - a) × (d - c)`, inputs `[a, b, c, d]`: `|n|²` times the
+/// parameter `s` of the point `a + s(b - a)` of line `ab` nearest to line `cd`.
+pub struct LineLineParam;
+impl Predicate<12> for LineLineParam {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let u = sub(&v3(x, 3), &a);
+        let v = sub(&v3(x, 9), &v3(x, 6));
+        let w = sub(&v3(x, 6), &a);
+        dot(&cross(&w, &v), &cross(&u, &v))
+    }
+}
+
+/// `|n|² - ((c - a) × (d - c))·n`: `|n|²` times `1 - s` for the `s` of [`LineLineParam`].
+pub struct LineLineParamRest;
+impl Predicate<12> for LineLineParamRest {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let u = sub(&v3(x, 3), &a);
+        let v = sub(&v3(x, 9), &v3(x, 6));
+        let w = sub(&v3(x, 6), &a);
+        let n = cross(&u, &v);
+        dot(&n, &n) - dot(&cross(&w, &v), &n)
+    }
+}
+
+/// `(n·(c - a))² - r²|n|²` with `n = (b - a) × (d - c)`, inputs `[a, b, c, d, r]` (13 numbers):
+/// `|n|²` times (squared distance between the lines `ab` and `cd` minus `r²`).
+pub struct LineLineReach;
+impl Predicate<13> for LineLineReach {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 13]) -> R {
+        let a = v3(x, 0);
+        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 9), &v3(x, 6)));
+        let h = dot(&n, &sub(&v3(x, 6), &a));
+        h.clone() * h - x[12].clone() * x[12].clone() * dot(&n, &n)
+    }
+}
+
 /// `(r2 - r1)^2 - |c1 - c2|^2`, inputs `[c1, r1, c2, r2]`: with `r2 >= r1` the ball 1 lies in
 /// ball 2 exactly when it is `>= 0`.
 pub struct BallInBall;

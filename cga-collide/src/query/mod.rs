@@ -15,16 +15,37 @@
 //! signs come from [`crate::exact`].
 
 pub mod baseline;
+mod clearance;
 mod collider;
+mod contact;
 mod containment;
 pub mod convex;
+mod distance;
 mod intersects;
+mod proximity;
+mod self_intersection;
 
+pub use clearance::{
+    mesh_pairs_within_distance, meshes_within_distance, within_distance_ball_ball,
+    within_distance_ball_sphere, within_distance_segment_ball, within_distance_segment_segment,
+    within_distance_segment_sphere, within_distance_segment_triangle,
+    within_distance_sphere_sphere, within_distance_triangle_ball, within_distance_triangle_sphere,
+    within_distance_triangle_triangle, WithinDistance,
+};
 pub use collider::{Collider, Mode};
+pub use contact::{
+    contact_class, contact_geometry, triangle_intersection, Contact, ContactGeometry, ExactPoint,
+};
 pub use containment::{point_in_solid, ray_crosses_triangle};
+pub use distance::{
+    distance_segment_segment, distance_segment_triangle, distance_triangle_triangle,
+    exact_distance_segment_segment, exact_distance_segment_triangle,
+    exact_distance_triangle_triangle, exact_mesh_distance, mesh_distance, Distance, ExactDistance,
+};
 pub use intersects::{
     intersects_ball_ball, intersects_segment_ball, intersects_segment_segment,
     intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,
     intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
     IntersectsWith,
 };
+pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};

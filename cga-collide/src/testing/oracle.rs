@@ -112,7 +112,12 @@ fn dot(a: &[Rational; 3], b: &[Rational; 3]) -> Rational {
 /// Squared distances from `c` to the convex hull of `pts`: (minimum, maximum), exactly.
 pub fn hull_distance2(pts: &[Point3<f64>], c: &Point3<f64>) -> (Rational, Rational) {
     let v: Vec<[Rational; 3]> = pts.iter().map(qp).collect();
-    let c = qp(c);
+    rational_hull_distance2(&v, &qp(c))
+}
+
+/// [`hull_distance2`] for rational points.
+fn rational_hull_distance2(v: &[[Rational; 3]], c: &[Rational; 3]) -> (Rational, Rational) {
+    let c = c.clone();
     let max = v
         .iter()
         .map(|p| dot(&sub(p, &c), &sub(p, &c)))
@@ -122,6 +127,9 @@ pub fn hull_distance2(pts: &[Point3<f64>], c: &Point3<f64>) -> (Rational, Ration
     let n = v.len();
     for mask in 1u32..(1 << n) {
         let sel: Vec<usize> = (0..n).filter(|i| mask & (1 << i) != 0).collect();
+        if sel.len() > 4 {
+            continue; // more than 4 points are affinely dependent in 3D
+        }
         let s0 = &v[sel[0]];
         let e: Vec<[Rational; 3]> = sel[1..].iter().map(|&i| sub(&v[i], s0)).collect();
         let w = sub(&c, s0);
@@ -223,6 +231,54 @@ pub fn intersects(a: &Shape, b: &Shape) -> bool {
             let far = d2 <= &s * &s;
             let t = q(*r2) - q(*r1);
             far && (t.is_negative() || d2 >= &t * &t)
+        }
+    }
+}
+
+/// The exact squared distance between the convex hulls of `a` and `b` (each non-empty): the
+/// squared distance from the origin to the hull of the differences `aᵢ - bⱼ`.
+pub fn hulls_distance2(a: &[Point3<f64>], b: &[Point3<f64>]) -> Rational {
+    let diffs: Vec<[Rational; 3]> = a
+        .iter()
+        .flat_map(|p| b.iter().map(move |r| sub(&qp(p), &qp(r))))
+        .collect();
+    let zero = <Rational as Ring>::zero;
+    rational_hull_distance2(&diffs, &[zero(), zero(), zero()]).0
+}
+
+/// Whether `dist(a, b) <= c`, exactly (`c` finite and non-negative). Hulls by
+/// [`hulls_distance2`]; a ball is within `c` of a set iff the set's nearest point to the centre
+/// is within `r + c`; a sphere surface is within `c` of a connected set iff the set's distances
+/// from the centre, an interval `[m, M]`, come within `c` of `r`.
+pub fn within_distance(a: &Shape, b: &Shape, c: f64) -> bool {
+    let c = q(c);
+    // `lo <= d` for a non-negative distance `d` with `d² = d2`.
+    let at_least = |d2: &Rational, lo: Rational| !lo.is_positive() || d2 >= &(&lo * &lo);
+    let at_most = |d2: &Rational, hi: Rational| !hi.is_negative() && d2 <= &(&hi * &hi);
+    match (a, b) {
+        (Shape::Hull(p), Shape::Hull(r)) => hulls_distance2(p, r) <= &c * &c,
+        (Shape::Hull(p), Shape::Ball(o, r)) | (Shape::Ball(o, r), Shape::Hull(p)) => {
+            at_most(&hull_distance2(p, o).0, q(*r) + c)
+        }
+        (Shape::Hull(p), Shape::Sphere(o, r)) | (Shape::Sphere(o, r), Shape::Hull(p)) => {
+            let (m, big_m) = hull_distance2(p, o);
+            at_most(&m, q(*r) + &c) && at_least(&big_m, q(*r) - c)
+        }
+        (Shape::Ball(c1, r1), Shape::Ball(c2, r2)) => {
+            let d = sub(&qp(c1), &qp(c2));
+            at_most(&dot(&d, &d), q(*r1) + q(*r2) + c)
+        }
+        (Shape::Sphere(c1, r1), Shape::Sphere(c2, r2)) => {
+            let d = sub(&qp(c1), &qp(c2));
+            let d2 = dot(&d, &d);
+            let gap = (q(*r1) - q(*r2)).abs();
+            at_most(&d2, q(*r1) + q(*r2) + &c) && at_least(&d2, gap - c)
+        }
+        (Shape::Ball(c1, r1), Shape::Sphere(c2, r2))
+        | (Shape::Sphere(c2, r2), Shape::Ball(c1, r1)) => {
+            let d = sub(&qp(c1), &qp(c2));
+            let d2 = dot(&d, &d);
+            at_most(&d2, q(*r1) + q(*r2) + &c) && at_least(&d2, q(*r2) - q(*r1) - c)
         }
     }
 }

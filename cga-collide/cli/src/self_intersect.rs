@@ -1,0 +1,65 @@
+//! `cga self-intersect MESH`: every pair of triangles of one mesh that meet anywhere other than
+//! in the vertices or edge they share (exact).
+
+use std::fs;
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use cga_collide::query::{self, Collider};
+use clap::Args;
+use serde_json::json;
+
+use crate::load_mesh;
+
+#[derive(Args, Debug)]
+pub(crate) struct SelfIntersectArgs {
+    /// The mesh: a file (.obj, .off, .ply, .stl) or a built-in name (bunny, bunny00, armadillo).
+    mesh: String,
+    /// Write the pairs, one `i j` per line (0-based triangle indices, `i < j`).
+    #[arg(long, value_name = "FILE")]
+    pairs: Option<PathBuf>,
+    /// Print the result as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+pub(crate) fn run(args: SelfIntersectArgs) -> Result<()> {
+    let mesh = load_mesh(&args.mesh)?;
+    let start = Instant::now();
+    let collider = Collider::new(mesh);
+    let build = start.elapsed();
+    let start = Instant::now();
+    let pairs = query::self_intersections(&collider);
+    let millis = start.elapsed().as_secs_f64() * 1e3;
+    if let Some(path) = &args.pairs {
+        let mut out = std::io::BufWriter::new(
+            fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
+        );
+        for (i, j) in &pairs {
+            writeln!(out, "{i} {j}")?;
+        }
+        out.flush()?;
+    }
+    if args.json {
+        let value = json!({
+            "pairs": pairs.len(),
+            "self_intersects": !pairs.is_empty(),
+            "triangles": collider.mesh().num_triangles(),
+            "closed": collider.mesh().is_closed(),
+            "build_millis": build.as_secs_f64() * 1e3,
+            "millis": millis,
+            "mesh": args.mesh,
+        });
+        println!("{}", serde_json::to_string_pretty(&value)?);
+    } else {
+        println!(
+            "{}: {} triangles, {} self-intersecting pairs (exact; {millis:.2} ms)",
+            args.mesh,
+            collider.mesh().num_triangles(),
+            pairs.len()
+        );
+    }
+    Ok(())
+}

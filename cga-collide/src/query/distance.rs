@@ -1,0 +1,474 @@
+//! Minimum distance with witness points: in `f64` with a **certified** error bound, or exactly
+//! in rationals.
+//!
+//! # What is computed
+//! The closest points of two segments, a segment and a triangle, two triangles, or two meshes
+//! (their surfaces: the nearest pair of triangles, found by branch and bound on the
+//! hierarchies). The nearest points are found by one generic routine, written once over
+//! [`Real`] and run on `f64` (fast) and on exact rationals: the minimum over the closest-feature
+//! candidates (vertex–triangle, edge–edge, and edge crossing the other triangle, which gives 0
+//! for intersecting triangles).
+//!
+//! # The error bound
+//! [`Distance::distance`] is the `f64` result `d`; [`Distance::error_bound`] is an `e` such that
+//! the true distance of the inputs (the real numbers the `f64` coordinates denote) lies in
+//! `[d - e, d + e]`. It is not an estimate: after the `f64` search, the interval is **proved**
+//! with the exact clearance tests of [`crate::query`] (`within_distance(d + e)` is true and
+//! `within_distance(d - e)` is false, for meshes over all triangle pairs), starting from
+//! `e = 32·2⁻⁵³·(|coordinates| + d)` and widening it eightfold until both proofs succeed. When
+//! the `f64` result is 0 and the shapes do meet (exact test), the bound is 0.
+//!
+//! [`ExactDistance`] gives the squared distance and the witnesses as exact rationals (the
+//! distance itself is usually irrational).
+//!
+//! ```
+//! use cga_collide::{nalgebra::Point3, query, Triangle};
+//! let p = |x, y, z| Point3::new(x, y, z);
+//! let a = Triangle::new(p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.))?;
+//! let b = Triangle::new(p(0.2, 0.2, 0.3), p(1., 1., 2.), p(2., 0., 1.))?;
+//! let d = query::distance_triangle_triangle(&a, &b);
+//! assert!((d.distance - 0.3).abs() <= d.error_bound);
+//! assert_eq!(d.witness_b, p(0.2, 0.2, 0.3));
+//! let exact = query::exact_distance_triangle_triangle(&a, &b);
+//! assert_eq!(exact.distance2.to_string(), "5404319552844595/600479950316066816"); // 0.3² of the f64 0.3
+//! # Ok::<(), cga_collide::GeometryError>(())
+//! ```
+
+use ga_core::scalar::{rational_from_f64, Rational, Real, Ring};
+use nalgebra::Point3;
+
+use crate::query::clearance::{mesh_tri, meshes_within_distance, triangles_within, WithinDistance};
+use crate::query::proximity::nearest_pair;
+use crate::query::{Collider, Intersects};
+use crate::shape::{Segment, Triangle};
+
+type V<F> = [F; 3];
+
+#[inline(always)]
+fn sub<F: Real>(a: &V<F>, b: &V<F>) -> V<F> {
+    [
+        a[0].clone() - b[0].clone(),
+        a[1].clone() - b[1].clone(),
+        a[2].clone() - b[2].clone(),
+    ]
+}
+
+#[inline(always)]
+fn add_scaled<F: Real>(a: &V<F>, u: &V<F>, s: &F) -> V<F> {
+    [
+        a[0].clone() + u[0].clone() * s.clone(),
+        a[1].clone() + u[1].clone() * s.clone(),
+        a[2].clone() + u[2].clone() * s.clone(),
+    ]
+}
+
+#[inline(always)]
+fn dot<F: Real>(a: &V<F>, b: &V<F>) -> F {
+    a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+}
+
+#[inline(always)]
+fn cross<F: Real>(u: &V<F>, v: &V<F>) -> V<F> {
+    [
+        u[1].clone() * v[2].clone() - u[2].clone() * v[1].clone(),
+        u[2].clone() * v[0].clone() - u[0].clone() * v[2].clone(),
+        u[0].clone() * v[1].clone() - u[1].clone() * v[0].clone(),
+    ]
+}
+
+#[inline(always)]
+fn dist2<F: Real>(a: &V<F>, b: &V<F>) -> F {
+    let d = sub(a, b);
+    dot(&d, &d)
+}
+
+/// A candidate nearest pair: squared distance and the two points.
+type Near<F> = (F, V<F>, V<F>);
+
+#[inline(always)]
+fn keep<F: Real>(best: &mut Option<Near<F>>, c: Near<F>) {
+    if best.as_ref().is_none_or(|b| c.0 < b.0) {
+        *best = Some(c);
+    }
+}
+
+/// The point of segment `ab` nearest to `p`.
+fn point_segment<F: Real>(a: &V<F>, b: &V<F>, p: &V<F>) -> V<F> {
+    let u = sub(b, a);
+    let t = dot(&sub(p, a), &u);
+    if t <= F::zero() {
+        return a.clone();
+    }
+    let den = dot(&u, &u);
+    if t >= den {
+        return b.clone();
+    }
+    add_scaled(a, &u, &(t / den))
+}
+
+/// The point of triangle `t` nearest to `p`.
+fn point_triangle<F: Real>(t: &[V<F>; 3], p: &V<F>) -> V<F> {
+    let n = cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]));
+    let nn = dot(&n, &n);
+    let inside = !nn.is_zero()
+        && (0..3).all(|i| {
+            let e = sub(&t[(i + 1) % 3], &t[i]);
+            dot(&cross(&e, &sub(p, &t[i])), &n) >= F::zero()
+        });
+    if inside {
+        let h = dot(&n, &sub(p, &t[0])) / nn;
+        return add_scaled(p, &n, &-h);
+    }
+    let mut best: Option<Near<F>> = None;
+    for i in 0..3 {
+        let q = point_segment(&t[i], &t[(i + 1) % 3], p);
+        keep(&mut best, (dist2(&q, p), q, p.clone()));
+    }
+    best.map(|b| b.1).unwrap_or_else(|| t[0].clone())
+}
+
+/// The nearest points of segments `ab` and `cd`.
+fn segment_segment<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Near<F> {
+    let mut best: Option<Near<F>> = None;
+    for (p, s0, s1, first) in [
+        (a, c, d, true),
+        (b, c, d, true),
+        (c, a, b, false),
+        (d, a, b, false),
+    ] {
+        let q = point_segment(s0, s1, p);
+        let d2 = dist2(p, &q);
+        keep(
+            &mut best,
+            if first {
+                (d2, p.clone(), q)
+            } else {
+                (d2, q, p.clone())
+            },
+        );
+    }
+    // The lines' common perpendicular, if it meets both segments.
+    let (u, v, w) = (sub(b, a), sub(d, c), sub(c, a));
+    let n = cross(&u, &v);
+    let nn = dot(&n, &n);
+    if !nn.is_zero() {
+        let s = dot(&cross(&w, &v), &n);
+        let t = dot(&cross(&w, &u), &n);
+        let zero = F::zero();
+        if s >= zero && s <= nn && t >= zero && t <= nn {
+            let p = add_scaled(a, &u, &(s / nn.clone()));
+            let q = add_scaled(c, &v, &(t / nn));
+            keep(&mut best, (dist2(&p, &q), p, q));
+        }
+    }
+    best.unwrap_or_else(|| unreachable!("four candidates"))
+}
+
+/// Where segment `ab` crosses the plane of the triangle `t` strictly (its end points strictly
+/// on opposite sides), if it does.
+fn plane_crossing<F: Real>(a: &V<F>, b: &V<F>, t: &[V<F>; 3]) -> Option<V<F>> {
+    let n = cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]));
+    let da = dot(&n, &sub(a, &t[0]));
+    let db = dot(&n, &sub(b, &t[0]));
+    let zero = F::zero();
+    let crosses = (da > zero && db < zero) || (da < zero && db > zero);
+    crosses.then(|| add_scaled(a, &sub(b, a), &(da.clone() / (da - db))))
+}
+
+/// The nearest points of segment `ab` and triangle `t`.
+fn segment_triangle<F: Real>(a: &V<F>, b: &V<F>, t: &[V<F>; 3]) -> Near<F> {
+    let mut best: Option<Near<F>> = None;
+    for p in [a, b] {
+        let q = point_triangle(t, p);
+        keep(&mut best, (dist2(p, &q), p.clone(), q));
+    }
+    for i in 0..3 {
+        keep(&mut best, segment_segment(a, b, &t[i], &t[(i + 1) % 3]));
+    }
+    if let Some(x) = plane_crossing(a, b, t) {
+        let q = point_triangle(t, &x);
+        keep(&mut best, (dist2(&x, &q), x, q));
+    }
+    best.unwrap_or_else(|| unreachable!("candidates"))
+}
+
+/// The nearest points of triangles `p` and `q`.
+fn triangle_triangle<F: Real>(p: &[V<F>; 3], q: &[V<F>; 3]) -> Near<F> {
+    let mut best: Option<Near<F>> = None;
+    for v in p {
+        let y = point_triangle(q, v);
+        keep(&mut best, (dist2(v, &y), v.clone(), y));
+    }
+    for v in q {
+        let x = point_triangle(p, v);
+        keep(&mut best, (dist2(&x, v), x, v.clone()));
+    }
+    for i in 0..3 {
+        for j in 0..3 {
+            keep(
+                &mut best,
+                segment_segment(&p[i], &p[(i + 1) % 3], &q[j], &q[(j + 1) % 3]),
+            );
+        }
+    }
+    // Intersecting triangles: an edge of one crosses the other.
+    for i in 0..3 {
+        if let Some(x) = plane_crossing(&p[i], &p[(i + 1) % 3], q) {
+            let y = point_triangle(q, &x);
+            keep(&mut best, (dist2(&x, &y), x, y));
+        }
+        if let Some(y) = plane_crossing(&q[i], &q[(i + 1) % 3], p) {
+            let x = point_triangle(p, &y);
+            keep(&mut best, (dist2(&x, &y), x, y));
+        }
+    }
+    best.unwrap_or_else(|| unreachable!("candidates"))
+}
+
+// ---------------------------------------------------------------- results
+
+/// A minimum distance in `f64` with a certified error bound (see the [module docs](self)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Distance {
+    /// The distance computed in `f64`.
+    pub distance: f64,
+    /// The true distance lies in `[distance - error_bound, distance + error_bound]` (proved
+    /// with exact predicates).
+    pub error_bound: f64,
+    /// The nearest point of the first shape (computed in `f64`: on it up to rounding).
+    pub witness_a: Point3<f64>,
+    /// The nearest point of the second shape (computed in `f64`).
+    pub witness_b: Point3<f64>,
+    /// For meshes, the triangles `(i, j)` of the first and the second mesh holding the witnesses.
+    pub triangles: Option<(u32, u32)>,
+}
+
+/// A minimum distance computed exactly: the squared distance and the witnesses are exact
+/// rationals (the true values for the real numbers the `f64` inputs denote).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactDistance {
+    /// The squared distance.
+    pub distance2: Rational,
+    /// The nearest point of the first shape.
+    pub witness_a: [Rational; 3],
+    /// The nearest point of the second shape.
+    pub witness_b: [Rational; 3],
+    /// For meshes, the triangles `(i, j)` holding the witnesses.
+    pub triangles: Option<(u32, u32)>,
+}
+
+impl ExactDistance {
+    /// The distance rounded to the nearest `f64` (up to one rounding of the square root).
+    pub fn distance_f64(&self) -> f64 {
+        Real::to_f64(&self.distance2).sqrt()
+    }
+}
+
+#[inline]
+fn pt(p: &Point3<f64>) -> V<f64> {
+    [p.x, p.y, p.z]
+}
+
+fn q(x: f64) -> Rational {
+    // Shapes and meshes hold finite coordinates only.
+    rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)
+}
+
+fn qv(p: &V<f64>) -> V<Rational> {
+    [q(p[0]), q(p[1]), q(p[2])]
+}
+
+fn tri(t: &Triangle) -> [V<f64>; 3] {
+    let [a, b, c] = t.vertices();
+    [pt(a), pt(b), pt(c)]
+}
+
+/// Proves `true distance ∈ [d - e, d + e]` with exact clearance tests and returns
+/// `e` (see the module docs). `scale` bounds the magnitude of the coordinates involved.
+/// `upper(c)` proves `distance <= c`; `lower(c)` is false only if `distance > c`.
+fn certify(
+    d: f64,
+    scale: f64,
+    meets: impl Fn() -> bool,
+    upper: impl Fn(f64) -> bool,
+    lower: impl Fn(f64) -> bool,
+) -> f64 {
+    if d == 0.0 && meets() {
+        return 0.0;
+    }
+    let mut e = 32.0 * f64::EPSILON * 0.5 * (scale + d);
+    if e.is_nan() || e <= 0.0 {
+        e = f64::MIN_POSITIVE;
+    }
+    loop {
+        let hi = (d + e).next_up();
+        let lo = (d - e).next_down();
+        if upper(hi) && (lo < 0.0 || !lower(lo)) {
+            return (hi - d).max(d - lo).next_up();
+        }
+        if !e.is_finite() {
+            return f64::INFINITY; // unreachable for finite inputs
+        }
+        e *= 8.0;
+    }
+}
+
+fn scale_of(points: &[&V<f64>]) -> f64 {
+    points
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+fn finish(
+    near: Near<f64>,
+    scale: f64,
+    meets: impl Fn() -> bool,
+    within: impl Fn(f64) -> bool,
+    triangles: Option<(u32, u32)>,
+) -> Distance {
+    let (d2, x, y) = near;
+    let distance = d2.sqrt();
+    Distance {
+        distance,
+        error_bound: certify(distance, scale, meets, &within, &within),
+        witness_a: Point3::from(x),
+        witness_b: Point3::from(y),
+        triangles,
+    }
+}
+
+fn exact(near: Near<Rational>, triangles: Option<(u32, u32)>) -> ExactDistance {
+    let (distance2, witness_a, witness_b) = near;
+    ExactDistance {
+        distance2,
+        witness_a,
+        witness_b,
+        triangles,
+    }
+}
+
+// ---------------------------------------------------------------- shapes
+
+/// The minimum distance between two closed segments, with witnesses and a certified bound.
+pub fn distance_segment_segment(a: &Segment, b: &Segment) -> Distance {
+    let (p0, p1, q0, q1) = (pt(a.a()), pt(a.b()), pt(b.a()), pt(b.b()));
+    finish(
+        segment_segment(&p0, &p1, &q0, &q1),
+        scale_of(&[&p0, &p1, &q0, &q1]),
+        || a.intersects(b),
+        |c| a.within_distance(b, c),
+        None,
+    )
+}
+
+/// The minimum distance between a closed segment and a closed triangle.
+pub fn distance_segment_triangle(a: &Segment, b: &Triangle) -> Distance {
+    let (p0, p1, t) = (pt(a.a()), pt(a.b()), tri(b));
+    finish(
+        segment_triangle(&p0, &p1, &t),
+        scale_of(&[&p0, &p1, &t[0], &t[1], &t[2]]),
+        || a.intersects(b),
+        |c| a.within_distance(b, c),
+        None,
+    )
+}
+
+/// The minimum distance between two closed triangles.
+pub fn distance_triangle_triangle(a: &Triangle, b: &Triangle) -> Distance {
+    let (s, t) = (tri(a), tri(b));
+    finish(
+        triangle_triangle(&s, &t),
+        scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
+        || a.intersects(b),
+        |c| a.within_distance(b, c),
+        None,
+    )
+}
+
+/// The exact squared distance and witnesses of two closed segments.
+pub fn exact_distance_segment_segment(a: &Segment, b: &Segment) -> ExactDistance {
+    let v = |p: &Point3<f64>| qv(&pt(p));
+    exact(
+        segment_segment(&v(a.a()), &v(a.b()), &v(b.a()), &v(b.b())),
+        None,
+    )
+}
+
+/// The exact squared distance and witnesses of a closed segment and a closed triangle.
+pub fn exact_distance_segment_triangle(a: &Segment, b: &Triangle) -> ExactDistance {
+    let t = tri(b).map(|p| qv(&p));
+    exact(segment_triangle(&qv(&pt(a.a())), &qv(&pt(a.b())), &t), None)
+}
+
+/// The exact squared distance and witnesses of two closed triangles.
+pub fn exact_distance_triangle_triangle(a: &Triangle, b: &Triangle) -> ExactDistance {
+    let (s, t) = (tri(a).map(|p| qv(&p)), tri(b).map(|p| qv(&p)));
+    exact(triangle_triangle(&s, &t), None)
+}
+
+// ---------------------------------------------------------------- meshes
+
+/// The `f64` nearest pair of triangles of two meshes (branch and bound on the hierarchies).
+fn mesh_nearest(a: &Collider, b: &Collider) -> Option<(Near<f64>, u32, u32)> {
+    let (_, i, j) = nearest_pair((a.mesh(), a.bvh()), (b.mesh(), b.bvh()), |i, j, _best| {
+        triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j)).0
+    })?;
+    Some((triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j)), i, j))
+}
+
+/// The minimum distance between the surfaces of two meshes (in the same frame, see
+/// [`Collider::placed`]), with witnesses, the triangle pair `(i, j)` attaining it and a
+/// certified error bound; `None` if a mesh has no triangles.
+///
+/// The bound is proved over **all** triangle pairs (the lower end with the exact mesh clearance
+/// test [`meshes_within_distance`], the upper end with the exact test of the pair found), so
+/// it holds for the meshes' true distance even when several pairs nearly tie.
+///
+/// ```
+/// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
+/// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
+/// let moved = cube.placed(&Isometry3::translation(1.5, 0.25, 0.0))?;
+/// let d = query::mesh_distance(&cube, &moved).unwrap();
+/// assert!((d.distance - 0.5).abs() <= d.error_bound && d.error_bound < 1e-12);
+/// # Ok::<(), cga_collide::mesh::MeshError>(())
+/// ```
+pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
+    let ((d2, x, y), i, j) = mesh_nearest(a, b)?;
+    let (s, t) = (mesh_tri(a, i), mesh_tri(b, j));
+    let distance = d2.sqrt();
+    let error_bound = certify(
+        distance,
+        scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
+        || triangles_within(&s, &t, 0.0),
+        |c| triangles_within(&s, &t, c),
+        |c| meshes_within_distance(a, b, c),
+    );
+    Some(Distance {
+        distance,
+        error_bound,
+        witness_a: Point3::from(x),
+        witness_b: Point3::from(y),
+        triangles: Some((i, j)),
+    })
+}
+
+/// The minimum distance between the surfaces of two meshes, exactly: the squared distance,
+/// witnesses and the triangle pair as exact rationals; `None` if a mesh has no triangles.
+/// The exact nearest pair is chosen among the pairs within the certified upper bound of
+/// [`mesh_distance`] (found with the exact clearance test), so near-ties are resolved exactly.
+pub fn exact_mesh_distance(a: &Collider, b: &Collider) -> Option<ExactDistance> {
+    let d = mesh_distance(a, b)?;
+    let hi = (d.distance + d.error_bound).next_up();
+    let mut best: Option<(Near<Rational>, u32, u32)> = None;
+    for (i, j) in crate::query::clearance::mesh_pairs_within_distance(a, b, hi) {
+        let near = triangle_triangle(
+            &mesh_tri(a, i).map(|p| qv(&p)),
+            &mesh_tri(b, j).map(|p| qv(&p)),
+        );
+        if best.as_ref().is_none_or(|(b, _, _)| near.0 < b.0) {
+            best = Some((near, i, j));
+        }
+    }
+    best.map(|(near, i, j)| exact(near, Some((i, j))))
+}

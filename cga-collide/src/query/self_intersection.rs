@@ -1,0 +1,221 @@
+//! Self-intersection of one mesh: every pair of triangles that meet anywhere other than in
+//! the vertices or the edge they share. Exact, with the hierarchy, in parallel.
+//!
+//! # Semantics
+//! Two triangles *share* the vertex positions they have in common (exact `f64` equality of the
+//! coordinates, so unwelded meshes, e.g. from STL, behave like welded ones). A pair is reported
+//! when the intersection `K` of the two closed triangles is more than the shared set `S`:
+//! * nothing shared: `K` is not empty (the exact triangle–triangle test);
+//! * one shared vertex `v`: `K ≠ {v}`. Every ray from `v` into a triangle leaves it through the
+//!   opposite edge, so `K ≠ {v}` exactly when the opposite edge of one triangle meets the
+//!   other (for a degenerate triangle, a segment through `v`, the far end points play the
+//!   role of the opposite edge);
+//! * one shared edge `uv`: `K ≠ [u, v]`. For non-degenerate triangles this happens exactly when
+//!   they are coplanar (`orient3d = 0`) and their third vertices lie on the same side of
+//!   `uv` (they overlap or fold onto each other); a degenerate triangle next to a
+//!   non-degenerate one meets it only in `[u, v]`; two degenerate ones overlap beyond `u` or
+//!   `v` when both extend past the same end;
+//! * all three positions shared (a duplicated triangle): reported unless degenerate.
+//!
+//! ```
+//! use cga_collide::{nalgebra::Point3, query::{self, Collider}, TriMesh};
+//! // A closed cube has no self-intersection...
+//! let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?;
+//! assert!(query::self_intersections(&Collider::new(cube)).is_empty());
+//! // ...a fold does: two triangles on the edge 0-1, the second folded onto the first.
+//! let p = |x, y| Point3::new(x, y, 0.0);
+//! let fold = TriMesh::new(vec![p(0., 0.), p(2., 0.), p(1., 1.), p(1., 2.)],
+//!                         vec![[0, 1, 2], [1, 0, 3]])?;
+//! assert_eq!(query::self_intersections(&Collider::new(fold)), vec![(0, 1)]);
+//! # Ok::<(), cga_collide::mesh::MeshError>(())
+//! ```
+
+use core::cmp::Ordering::{Equal, Greater};
+use std::ops::ControlFlow;
+
+use crate::exact::predicates::EdgeSide;
+use crate::exact::{ExactKernel, Kernel, PlaneSide};
+use crate::parallel::*;
+use crate::query::proximity::for_each_self_pair;
+use crate::query::{Collider, Intersects};
+use crate::shape::{Segment, Triangle};
+
+type P3 = [f64; 3];
+
+fn triangle(p: &P3, q: &P3, r: &P3) -> Triangle {
+    Triangle::new((*p).into(), (*q).into(), (*r).into())
+        .unwrap_or_else(|_| unreachable!("finite mesh coordinates"))
+}
+
+fn degenerate(t: &[P3; 3]) -> bool {
+    ExactKernel::plane(t).is_degenerate()
+}
+
+/// The two extreme points of collinear points (exact: order along an axis where they differ).
+fn extremes(p: &[P3; 3]) -> (P3, P3) {
+    for k in 0..3 {
+        let (mut lo, mut hi) = (0, 0);
+        for (i, q) in p.iter().enumerate() {
+            if q[k] < p[lo][k] {
+                lo = i;
+            }
+            if q[k] > p[hi][k] {
+                hi = i;
+            }
+        }
+        if p[lo][k] < p[hi][k] {
+            return (p[lo], p[hi]);
+        }
+    }
+    (p[0], p[0])
+}
+
+/// A part of a triangle around a shared vertex: the triangle itself or a segment.
+enum Part {
+    Tri(Triangle),
+    Seg(Segment),
+}
+
+impl Part {
+    fn met_by(&self, s: &Segment) -> bool {
+        match self {
+            Part::Tri(t) => s.intersects(t),
+            Part::Seg(x) => s.intersects(x),
+        }
+    }
+}
+
+fn segment(p: &P3, q: &P3) -> Segment {
+    Segment::new((*p).into(), (*q).into()).unwrap_or_else(|_| unreachable!("finite coordinates"))
+}
+
+/// The parts of triangle `t` around its vertex `v`, each with its far set (where every ray
+/// from `v` into the part leaves it: the opposite edge, or the far end point of a degenerate
+/// triangle's segment). Segments and points are kept as segments: the exact tests are fast on
+/// them, while a degenerate triangle's plane would send every side test to exact arithmetic.
+fn pieces(t: &[P3; 3], v: &P3) -> Vec<(Part, Segment)> {
+    if !degenerate(t) {
+        let others: Vec<&P3> = t.iter().filter(|p| *p != v).collect();
+        return vec![(
+            Part::Tri(triangle(&t[0], &t[1], &t[2])),
+            segment(others[0], others[1]),
+        )];
+    }
+    let (p, q) = extremes(t);
+    [p, q]
+        .iter()
+        .filter(|e| *e != v)
+        .map(|e| (Part::Seg(segment(v, e)), segment(e, e)))
+        .collect()
+}
+
+/// Whether triangles sharing exactly the vertex `v` meet anywhere else.
+fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
+    let (pp, pq) = (pieces(p, v), pieces(q, v));
+    pp.iter().any(|(part_p, far_p)| {
+        pq.iter()
+            .any(|(part_q, far_q)| part_q.met_by(far_p) || part_p.met_by(far_q))
+    })
+}
+
+/// Whether triangles sharing exactly the edge `uv` meet anywhere else.
+fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
+    let third = |t: &[P3; 3]| *t.iter().find(|x| *x != u && *x != v).unwrap_or(u);
+    let (a, b) = (third(p), third(q));
+    match (degenerate(p), degenerate(q)) {
+        (false, false) => {
+            ExactKernel::orient3d(u, v, &a, &b) == Equal
+                && ExactKernel::sign::<EdgeSide, 12>(&[
+                    u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
+                ]) == Greater
+        }
+        (true, true) => {
+            // All on the line `uv`: both extend past the same end.
+            let k = (0..3).find(|&k| u[k] != v[k]).unwrap_or(0);
+            let (lo, hi) = (u[k].min(v[k]), u[k].max(v[k]));
+            (a[k] > hi && b[k] > hi) || (a[k] < lo && b[k] < lo)
+        }
+        _ => false,
+    }
+}
+
+fn distinct(t: &[P3; 3]) -> Vec<P3> {
+    let mut out: Vec<P3> = Vec::with_capacity(3);
+    for p in t {
+        if !out.contains(p) {
+            out.push(*p);
+        }
+    }
+    out
+}
+
+/// Whether two triangles of one mesh meet anywhere other than in what they share (see the
+/// module docs), exactly.
+pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
+    let dp = distinct(p);
+    let shared: Vec<P3> = dp.iter().filter(|x| q.contains(x)).copied().collect();
+    match shared.as_slice() {
+        [] => triangle(&p[0], &p[1], &p[2]).intersects(&triangle(&q[0], &q[1], &q[2])),
+        [v] => meet_beyond_vertex(p, q, v),
+        [u, v] => meet_beyond_edge(p, q, u, v),
+        _ => !degenerate(p),
+    }
+}
+
+/// Every pair `(i, j)`, `i < j`, of triangles of the mesh that meet anywhere other than in the
+/// vertices or the edge they share (see the [module docs](self)), sorted. The hierarchy
+/// enumerates the pairs whose boxes overlap; they are decided in parallel.
+pub fn self_intersections(mesh: &Collider) -> Vec<(u32, u32)> {
+    let mut candidates = Vec::new();
+    let _ = for_each_self_pair::<()>(mesh.mesh(), mesh.bvh(), |i, j| {
+        candidates.push((i.min(j), i.max(j)));
+        ControlFlow::Continue(())
+    });
+    let tri = |i: u32| {
+        let [a, b, c] = mesh.mesh().triangle(i as usize);
+        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
+    };
+    let mut out: Vec<(u32, u32)> = candidates
+        .par_iter()
+        .copied()
+        .filter(|&(i, j)| meet_elsewhere(&tri(i), &tri(j)))
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// Whether any two triangles of the mesh meet anywhere other than in what they share (stops
+/// at the first such pair). See [`self_intersections`].
+pub fn self_intersects(mesh: &Collider) -> bool {
+    let tri = |i: u32| {
+        let [a, b, c] = mesh.mesh().triangle(i as usize);
+        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
+    };
+    for_each_self_pair(mesh.mesh(), mesh.bvh(), |i, j| {
+        if meet_elsewhere(&tri(i), &tri(j)) {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    })
+    .is_break()
+}
+
+/// [`self_intersections`] by brute force over every pair (in parallel, no hierarchy, no box
+/// filter): the baseline of the benchmarks and tests.
+pub fn self_intersections_brute(mesh: &Collider) -> Vec<(u32, u32)> {
+    let n = mesh.mesh().num_triangles() as u32;
+    let tri = |i: u32| {
+        let [a, b, c] = mesh.mesh().triangle(i as usize);
+        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
+    };
+    let mut out: Vec<(u32, u32)> = (0..n)
+        .into_par_iter()
+        .flat_map_iter(|i| {
+            let ti = tri(i);
+            (i + 1..n).filter_map(move |j| meet_elsewhere(&ti, &tri(j)).then_some((i, j)))
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}

@@ -1,0 +1,155 @@
+//! Minimum distance: the exact rational distance of the oracle lies within the reported
+//! certified bound; the exact variant equals the oracle; meshes agree with brute force.
+
+use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
+use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
+use cga_collide::query::{self, Collider, Distance};
+use cga_collide::testing::oracle;
+use cga_collide::{Segment, TriMesh, Triangle};
+use proptest::prelude::*;
+
+fn coord() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        2 => (-3i32..=3).prop_map(f64::from),
+        3 => -3.0f64..3.0,
+        1 => (-3.0f64..3.0).prop_map(|x| x * 1e-7),
+    ]
+}
+
+fn point() -> impl Strategy<Value = Point3<f64>> {
+    (coord(), coord(), coord()).prop_map(|(x, y, z)| Point3::new(x, y, z))
+}
+
+fn segment() -> impl Strategy<Value = Segment> {
+    (point(), point()).prop_map(|(a, b)| Segment::new(a, b).unwrap())
+}
+
+fn triangle() -> impl Strategy<Value = Triangle> {
+    (point(), point(), point()).prop_map(|(a, b, c)| Triangle::new(a, b, c).unwrap())
+}
+
+fn q(x: f64) -> Rational {
+    rational_from_f64(x).unwrap()
+}
+
+/// `d - e <= true distance <= d + e`, checked on squares in exact rationals.
+fn within_bound(d: &Distance, exact2: &Rational) -> Result<(), TestCaseError> {
+    let hi = q(d.distance) + q(d.error_bound);
+    prop_assert!(exact2 <= &(&hi * &hi), "above the bound: {:?}", d);
+    let lo = q(d.distance) - q(d.error_bound);
+    if lo > q(0.0) {
+        prop_assert!(exact2 >= &(&lo * &lo), "below the bound: {:?}", d);
+    }
+    // The bound is tight for these well-scaled inputs.
+    prop_assert!(d.error_bound <= 1e-12, "loose bound {:?}", d);
+    Ok(())
+}
+
+fn dist2(a: &Point3<f64>, b: &Point3<f64>) -> f64 {
+    (a - b).norm_squared()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn segment_segment(a in segment(), b in segment()) {
+        let exact = oracle::hulls_distance2(&[*a.a(), *a.b()], &[*b.a(), *b.b()]);
+        let d = query::distance_segment_segment(&a, &b);
+        within_bound(&d, &exact)?;
+        prop_assert!((dist2(&d.witness_a, &d.witness_b).sqrt() - d.distance).abs() <= 1e-12);
+        prop_assert_eq!(query::exact_distance_segment_segment(&a, &b).distance2, exact);
+    }
+
+    #[test]
+    fn segment_triangle(a in segment(), b in triangle()) {
+        let exact = oracle::hulls_distance2(&[*a.a(), *a.b()], b.vertices());
+        within_bound(&query::distance_segment_triangle(&a, &b), &exact)?;
+        prop_assert_eq!(query::exact_distance_segment_triangle(&a, &b).distance2, exact);
+    }
+
+    #[test]
+    fn triangle_triangle(a in triangle(), b in triangle()) {
+        let exact = oracle::hulls_distance2(a.vertices(), b.vertices());
+        let d = query::distance_triangle_triangle(&a, &b);
+        within_bound(&d, &exact)?;
+        let e = query::exact_distance_triangle_triangle(&a, &b);
+        prop_assert_eq!(&e.distance2, &exact);
+        // The exact witnesses realise the exact distance.
+        let w: Rational = (0..3)
+            .map(|k| (&e.witness_a[k] - &e.witness_b[k]).pow(2))
+            .fold(q(0.0), |s, x| s + x);
+        prop_assert_eq!(w, exact);
+    }
+}
+
+/// The nearest pair by brute force over every triangle pair, exactly.
+fn brute_exact(a: &Collider, b: &Collider) -> Rational {
+    let mut best: Option<Rational> = None;
+    for i in 0..a.mesh().num_triangles() {
+        for j in 0..b.mesh().num_triangles() {
+            let d = oracle::hulls_distance2(&a.mesh().triangle(i), &b.mesh().triangle(j));
+            if best.as_ref().is_none_or(|b| &d < b) {
+                best = Some(d);
+            }
+        }
+    }
+    best.unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2))]
+
+    #[test]
+    fn mesh_distance_within_its_bound(
+        t in (-2.5f64..2.5, -2.5f64..2.5, -2.5f64..2.5),
+        r in (-3.2f64..3.2, -3.2f64..3.2, -3.2f64..3.2),
+    ) {
+        let cube = Collider::new(
+            TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.)).unwrap());
+        let moved = cube
+            .placed(&Isometry3::new(Vector3::new(t.0, t.1, t.2), Vector3::new(r.0, r.1, r.2)))
+            .unwrap();
+        let exact = brute_exact(&cube, &moved);
+        let d = query::mesh_distance(&cube, &moved).unwrap();
+        within_bound(&d, &exact)?;
+        let (i, j) = d.triangles.unwrap();
+        let pair = oracle::hulls_distance2(&cube.mesh().triangle(i as usize),
+                                           &moved.mesh().triangle(j as usize));
+        prop_assert!((Real::to_f64(&pair).sqrt() - d.distance).abs() <= d.error_bound);
+        let e = query::exact_mesh_distance(&cube, &moved).unwrap();
+        prop_assert_eq!(e.distance2, exact);
+    }
+}
+
+#[test]
+fn touching_and_intersecting_have_bound_zero() {
+    let p = |x, y, z| Point3::new(x, y, z);
+    let a = Triangle::new(p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.)).unwrap();
+    let b = Triangle::new(p(1., 0., 0.), p(2., 0., 1.), p(2., 1., 0.)).unwrap();
+    let d = query::distance_triangle_triangle(&a, &b);
+    assert_eq!((d.distance, d.error_bound), (0.0, 0.0));
+    let c = Triangle::new(p(0.2, 0.2, -1.), p(0.2, 0.2, 1.), p(3., 3., 0.)).unwrap();
+    let d = query::distance_triangle_triangle(&a, &c);
+    assert_eq!((d.distance, d.error_bound), (0.0, 0.0));
+}
+
+#[test]
+fn bunny_against_a_moved_copy_agrees_with_brute_force_pair() {
+    let bunny = TriMesh::bunny00().unit();
+    let a = Collider::new(bunny.clone());
+    let b = a.placed(&Isometry3::translation(1.2, 0.1, 0.0)).unwrap();
+    let d = query::mesh_distance(&a, &b).unwrap();
+    assert!(d.distance > 0.0 && d.error_bound < 1e-12 * d.distance.max(1.0));
+    // No pair is closer than the certified lower end, and some pair is within the upper end.
+    assert!(!query::meshes_within_distance(
+        &a,
+        &b,
+        d.distance - 2.0 * d.error_bound
+    ));
+    assert!(query::meshes_within_distance(
+        &a,
+        &b,
+        d.distance + d.error_bound
+    ));
+}
