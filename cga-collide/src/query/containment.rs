@@ -23,11 +23,12 @@ use crate::shape::{Segment, Triangle};
 /// use cga_collide::nalgebra::Point3;
 /// use cga_collide::query::point_in_solid;
 /// use cga_collide::TriMesh;
-/// let cube = TriMesh::unit_cube();
+/// let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0))?;
 /// let tris = || (0..cube.num_triangles()).map(|i| cube.triangle(i));
 /// assert!(point_in_solid(tris(), &Point3::new(0.5, 0.5, 0.5)));
 /// assert!(point_in_solid(tris(), &Point3::new(1.0, 0.5, 0.5))); // on the surface
 /// assert!(!point_in_solid(tris(), &Point3::new(1.5, 0.5, 0.5)));
+/// # Ok::<(), cga_collide::mesh::MeshError>(())
 /// ```
 pub fn point_in_solid<I>(triangles: I, p: &Point3<f64>) -> bool
 where
