@@ -290,28 +290,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         .collect();
     let inverse_doc = inverse_doc(t);
     let dense_items = if t.is_dense {
-        let coeffs: Vec<Ident> = (0..count).map(|i| format_ident!("c{i}")).collect();
         quote! {
-            impl<T> #name<T> {
-                /// Builds a multivector from its coefficients in canonical blade order.
-                #[inline]
-                pub fn from_coefficients(coefficients: [T; #count]) -> Self {
-                    let [#(#coeffs),*] = coefficients;
-                    #name { #(#fields: #coeffs),* }
-                }
-                /// The coefficients in canonical blade order.
-                #[inline]
-                pub fn into_coefficients(self) -> [T; #count] {
-                    [#(self.#fields),*]
-                }
-            }
-            impl<T: Clone> #name<T> {
-                /// The coefficients in canonical blade order.
-                #[inline]
-                pub fn coefficients(&self) -> [T; #count] {
-                    [#(self.#fields.clone()),*]
-                }
-            }
             impl<T: ::ga_core::scalar::Field> #name<T> {
                 /// The unchecked solution of `A X = 1` by Gaussian elimination on the
                 /// left-multiplication matrix (partial pivoting by `Field::pivot_score`); `None`
@@ -319,7 +298,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
                 /// singular `A` gives an inaccurate result: prefer [`inverse`](Self::inverse),
                 /// which checks its answer.
                 pub fn general_inverse(&self) -> Option<Self> {
-                    let span: [u32; #count] = [#(#masks),*];
+                    let span = Self::BLADE_MASKS;
                     let solution = ::ga_core::inverse::solve(&SIGNATURE, &span, &self.coefficients(), &span)?;
                     let array: [T; #count] = solution.try_into().ok()?;
                     Some(Self::from_coefficients(array))
@@ -398,11 +377,32 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         impl<T> #name<T> {
             /// Canonical names of this type's blades, in field order (`1` is the scalar).
             pub const BLADES: [&'static str; #count] = [#(#names),*];
+            /// Blade bitmasks (bit `i` is generator `i`), in field order.
+            pub const BLADE_MASKS: [u32; #count] = [#(#masks),*];
+            /// Builds a value from its coefficients in canonical blade order (field order).
+            #[inline]
+            pub fn from_coefficients(coefficients: [T; #count]) -> Self {
+                let [#(#fields),*] = coefficients;
+                #name { #(#fields),* }
+            }
+            /// The coefficients in canonical blade order (field order).
+            #[inline]
+            pub fn into_coefficients(self) -> [T; #count] {
+                [#(self.#fields),*]
+            }
             /// Builds a value from its coefficients in canonical blade order.
             #[allow(clippy::too_many_arguments)]
             #[inline]
             pub const fn new(#(#fields: T),*) -> Self {
                 #name { #(#fields),* }
+            }
+        }
+
+        impl<T: Clone> #name<T> {
+            /// The coefficients in canonical blade order (field order).
+            #[inline]
+            pub fn coefficients(&self) -> [T; #count] {
+                [#(self.#fields.clone()),*]
             }
         }
 
@@ -450,9 +450,9 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
             }
             #[doc = #inverse_doc]
             pub fn inverse(&self) -> Option<Self> {
-                let x = [#(self.#fields.clone()),*];
+                let x = self.coefficients();
                 let [#(#fields),*]: [T; #count] =
-                    ::ga_core::inverse::inverse(&SIGNATURE, &[#(#masks),*], &x)?.try_into().ok()?;
+                    ::ga_core::inverse::inverse(&SIGNATURE, &Self::BLADE_MASKS, &x)?.try_into().ok()?;
                 Some(#name { #(#fields),* })
             }
         }
