@@ -484,7 +484,8 @@ macro_rules! unary_check {
             &format!("{name}: versor_inverse"),
             a.versor_inverse().map(|x| x.to_ref(sig)),
             ra.versor_inverse(),
-            if ns > 0.0 { m / ns } else { m },
+            // The relative error of a near-zero ⟨AÃ⟩₀ (cancellation) is ~ m² len / |⟨AÃ⟩₀| ulps.
+            if ns > 0.0 { (m / ns) * (1.0 + m * m * len / ns) } else { m },
         );
         // The checked inverse: exactly the reference's general inverse when that lies in the
         // type, else `None`; in f64, a returned value is an inverse (both products are 1).
