@@ -45,12 +45,64 @@ mod products {
     pub fn lc(a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
         from_cga(to_cga(a).left_contraction(&to_cga(b)))
     }
+    /// Our dual `A I⁻¹` (generated).
+    pub fn dual(a: &SymMultivector) -> SymMultivector {
+        from_cga(to_cga(a).dual())
+    }
+    /// Our regressive product `undual(dual A ∧ dual B)` (generated).
+    pub fn regressive(a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        from_cga(to_cga(a).regressive(&to_cga(b)))
+    }
     /// Reverse (generated).
     pub fn rev(a: &SymMultivector) -> SymMultivector {
         from_cga(to_cga(a).reverse())
     }
 }
-pub use products::{gp, lc, rev, wedge};
+pub use products::{dual, gp, lc, regressive, rev, wedge};
+
+/// The generated products, for [`Scope::evaluate`].
+struct Generated;
+impl ga_core::symbolic::thesis::Products for Generated {
+    fn geometric(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        gp(a, b)
+    }
+    fn wedge(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        wedge(a, b)
+    }
+    fn left_contraction(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        lc(a, b)
+    }
+}
+
+/// The point letters of x1 … x8.
+const LETTERS: [&str; 8] = ["a", "b", "c", "d", "q", "w", "p", "z"];
+
+/// Names of the `computed` expressions, built from our conventions (not from the thesis's
+/// formulas): `P1` … `P8` = 2·up(x_i), `X` = 2·up(x), `n` = n_inf, `nbar` = −2 n_0, `I` = e12345,
+/// the rotor `R` = co − e3e1 si and its reverse `Rt`, and the auxiliary-symbol forms of the
+/// primitives `L_alpha`, `L_beta`, `Pi_omega`, `Pi_lambda`, `E_mu`, `E_lambda`.
+fn computed_name(name: &str) -> Option<SymMultivector> {
+    if let Some(k) = name.strip_prefix('P').and_then(|k| k.parse::<usize>().ok()) {
+        return LETTERS.get(k.wrapping_sub(1)).map(|l| point_of(l));
+    }
+    let rotor = || sc(p("co")).sub(&gp(&aux_mv("e3e1"), &sc(p("si"))));
+    Some(match name {
+        "X" => point_of("a"),
+        "n" => n_inf(),
+        "nbar" | "n̄" => n_bar(),
+        "I" => pseudo(),
+        "R" => rotor(),
+        "Rt" => rev(&rotor()),
+        _ => return aux_form(name).map(|t| aux_mv(&t)),
+    })
+}
+
+/// Evaluates a `computed` expression with the generated products.
+fn computed_in(scope: &Scope, text: &str) -> SymMultivector {
+    scope
+        .evaluate(text, &Generated, &computed_name)
+        .unwrap_or_else(|e| panic!("computed expression `{text}`: {e}"))
+}
 
 // ---------------------------------------------------------------------------------------------
 // Helpers.
@@ -113,8 +165,49 @@ fn wedge_all(items: &[SymMultivector]) -> SymMultivector {
 fn thesis_dual(a: &SymMultivector) -> SymMultivector {
     gp(&pseudo(), a)
 }
+/// Reads a printed formula (the thesis's notation, [`SymMultivector`]'s own products); the
+/// names `L_alpha` … `E_lambda` stand for the auxiliary-symbol forms of the primitives.
 fn parse_in(scope: &Scope, text: &str) -> SymMultivector {
-    scope.parse(text).expect("fixture expressions parse")
+    scope
+        .evaluate(text, &Own, &|name| printed_name(scope, name))
+        .unwrap_or_else(|e| panic!("fixture expression `{text}`: {e}"))
+}
+
+/// Names of printed formulas beyond [`Scope::parse`]'s: the auxiliary-symbol forms, and the
+/// thesis's point `X = 2x + x²n − n̄` of (A.86).
+fn printed_name(scope: &Scope, name: &str) -> Option<SymMultivector> {
+    if name == "X" {
+        return scope.parse("2x + x^2 n - nbar").ok();
+    }
+    aux_form(name).map(|t| aux_mv(&t))
+}
+
+/// [`SymMultivector`]'s own products (for reading printed formulas).
+struct Own;
+impl ga_core::symbolic::thesis::Products for Own {
+    fn geometric(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        a.gp(b)
+    }
+    fn wedge(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        a.wedge(b)
+    }
+    fn left_contraction(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+        a.left_contraction(b)
+    }
+}
+
+/// The auxiliary-symbol form named `L_alpha`, `L_beta`, `Pi_omega`, `Pi_lambda`, `E_mu` or
+/// `E_lambda`.
+fn aux_form(name: &str) -> Option<String> {
+    Some(match name {
+        "L_alpha" => line_aux("alpha"),
+        "L_beta" => line_aux("beta"),
+        "Pi_omega" => plane_aux("omega"),
+        "Pi_lambda" => plane_aux("lambda"),
+        "E_mu" => sphere_aux("mu"),
+        "E_lambda" => sphere_aux("lambda"),
+        _ => return None,
+    })
 }
 /// Replaces `u^2` by `1 ± v^2` (reduction modulo u² ∓ v² = 1: `sign = -1` gives the circle
 /// u² + v² = 1, `sign = +1` the hyperbola u² − v² = 1).
@@ -155,6 +248,9 @@ pub enum Verdict {
     RuleFails,
     /// A rule that fails with the printed formulas but holds once they are corrected.
     RuleHoldsCorrected,
+    /// Only notation or a definition: nothing to compute (the detail says what it fixes and
+    /// where it is checked in use).
+    Notation,
 }
 
 impl Verdict {
@@ -167,6 +263,7 @@ impl Verdict {
             Verdict::RuleHolds => "rule correct".into(),
             Verdict::RuleFails => "rule wrong".into(),
             Verdict::RuleHoldsCorrected => "rule correct, printed formulas wrong".into(),
+            Verdict::Notation => "notation (nothing to compute)".into(),
         }
     }
     /// Stable key for tests.
@@ -178,6 +275,7 @@ impl Verdict {
             Verdict::RuleHolds => "rule-holds",
             Verdict::RuleFails => "rule-fails",
             Verdict::RuleHoldsCorrected => "rule-holds-corrected",
+            Verdict::Notation => "notation",
         }
     }
 }
@@ -231,6 +329,46 @@ fn judge(printed: &SymMultivector, computed: &SymMultivector, detail: &mut Strin
             Verdict::Differs
         }
     }
+}
+
+/// Verdict of a chain of printed steps `lhs = s1 = s2 = …`, each compared with the computed
+/// value: confirmed when every step is; a factor when every step agrees up to the same factor;
+/// otherwise the steps that differ are listed.
+fn judge_steps(steps: &[SymMultivector], computed: &SymMultivector, detail: &mut String) -> Verdict {
+    if let [one] = steps {
+        let v = judge(one, computed, detail);
+        if v == Verdict::Differs {
+            corrected(detail, computed);
+        }
+        return v;
+    }
+    let verdicts: Vec<Verdict> = steps
+        .iter()
+        .map(|s| judge(s, computed, &mut String::new()))
+        .collect();
+    if verdicts.iter().all(|v| *v == Verdict::Confirmed) {
+        return Verdict::Confirmed;
+    }
+    let _ = writeln!(detail, "The printed steps, each against the computed value:\n");
+    for (k, v) in verdicts.iter().enumerate() {
+        let _ = writeln!(detail, "- step {}: {}", k + 1, v.label());
+    }
+    detail.push('\n');
+    if let Some(k) = verdicts.iter().position(|v| *v == Verdict::Differs) {
+        let _ = writeln!(detail, "Step {}:\n", k + 1);
+        judge(&steps[k], computed, detail);
+        corrected(detail, computed);
+        return Verdict::Differs;
+    }
+    let factors: Vec<&Verdict> = verdicts.iter().filter(|v| **v != Verdict::Confirmed).collect();
+    if factors.windows(2).all(|w| w[0] == w[1]) && factors.len() == verdicts.len() {
+        return factors[0].clone();
+    }
+    let _ = writeln!(
+        detail,
+        "The steps do not agree with each other up to one factor."
+    );
+    Verdict::Differs
 }
 
 fn short(s: &str) -> String {
@@ -322,6 +460,9 @@ pub const CORRECTED_FORMULAS: &[(&str, &str)] = &[
     ),
 ];
 
+/// Corrected steps `(equation, step (1-based), text)` of multi-step entries.
+pub const CORRECTED_STEPS: &[(&str, usize, &str)] = &[];
+
 /// One-line summaries of what is wrong, for the report's table (the details are computed).
 pub const NOTES: &[(&str, &str)] = &[
     ("A.14", "a misplaced bracket: the eē terms lose the factor 4 ((A.16) is right)"),
@@ -412,7 +553,20 @@ impl Ctx<'_> {
         seen.push(e.id.clone());
         for u in self.uses(e) {
             if let Some(d) = self.fx.entry(&u) {
-                self.add_lets(d, s, seen);
+                // `uses_corrected`: this entry is checked with the corrected definitions of `d`
+                // (its own erratum is counted there, not here).
+                let fixed = e
+                    .field("uses_corrected")
+                    .is_some_and(|c| c.split(',').any(|x| x.trim() == d.id));
+                if fixed && !self.corrected {
+                    let ctx = Ctx {
+                        fx: self.fx,
+                        corrected: true,
+                    };
+                    ctx.add_lets(d, s, seen);
+                } else {
+                    self.add_lets(d, s, seen);
+                }
             }
         }
         for (n, x) in &e.lets {
@@ -445,6 +599,25 @@ impl Ctx<'_> {
                 .to_string(),
         }
     }
+    /// The printed steps (`formula` lines) of an entry, corrected when `corrected`.
+    pub fn steps(&self, e: &Entry) -> Vec<String> {
+        e.fields
+            .iter()
+            .filter(|(k, _)| k == "formula")
+            .enumerate()
+            .map(|(k, (_, v))| {
+                let fixed = CORRECTED_STEPS
+                    .iter()
+                    .find(|(id, step, _)| self.corrected && *id == e.id && *step == k + 1)
+                    .map(|(_, _, t)| t.to_string());
+                match (k, fixed) {
+                    (_, Some(t)) => t,
+                    (0, None) => self.formula_of(&e.id),
+                    _ => v.clone(),
+                }
+            })
+            .collect()
+    }
     /// Whether anything about this entry (or what it uses) is corrected.
     fn has_correction(&self, e: &Entry) -> bool {
         let mut ids = vec![e.id.clone()];
@@ -464,8 +637,10 @@ impl Ctx<'_> {
             }
             i += 1;
         }
-        ids.iter().any(|id| {
+        e.field("erratum").is_some()
+            || ids.iter().any(|id| {
             lookup2(CORRECTED_FORMULAS, id).is_some()
+                || CORRECTED_STEPS.iter().any(|(x, _, _)| x == id)
                 || lookup2(CORRECTED_USES, id).is_some()
                 || CORRECTED_LETS.iter().any(|(x, _, _)| x == id)
         }) || e.field("kind") == Some("rule_line_line")
@@ -475,6 +650,11 @@ impl Ctx<'_> {
         let mut out = Vec::new();
         if let Some(f) = lookup2(CORRECTED_FORMULAS, &e.id) {
             out.push(format!("formula = `{f}`"));
+        }
+        for (id, step, t) in CORRECTED_STEPS {
+            if *id == e.id {
+                out.push(format!("step {step} = `{t}`"));
+            }
         }
         for (id, n, v) in CORRECTED_LETS {
             if *id == e.id {
@@ -559,6 +739,114 @@ fn evaluate(ctx: &Ctx, e: &Entry) -> (String, Verdict, String) {
             .expect("definitions expand")
     };
     let verdict = match kind {
+        "notation" => {
+            method = "nothing to compute: it fixes notation or defines a quantity".into();
+            Verdict::Notation
+        }
+        "dual" => {
+            method = "I A (generated geometric product) against our dual A I⁻¹ (generated), \
+                      for A a general multivector with 32 symbolic coefficients"
+                .into();
+            let a = SymMultivector::from_coefficients(
+                &(0..32).map(|k| Poly::var(&format!("g{k}"))).collect::<Vec<_>>(),
+            );
+            let ia = gp(&pseudo(), &a);
+            if ia == dual(&a).neg() {
+                let _ = writeln!(
+                    detail,
+                    "I A = −dual(A) for every A: the thesis's dual is the negative of ours \
+                     (I is central and I² = −1, so A I⁻¹ = −I A)."
+                );
+                Verdict::Confirmed
+            } else {
+                let _ = writeln!(detail, "I A is not ±dual(A).");
+                Verdict::Differs
+            }
+        }
+        "metric" => {
+            method = "the products e_i e_j of the basis vectors (generated geometric product)".into();
+            let names = ["e1", "e2", "e3", "e", "ē"];
+            let mut ok = true;
+            for i in 0..5u8 {
+                let sq = gp(&blade(1 << i), &blade(1 << i));
+                let want = if i == 4 { int(-1) } else { int(1) };
+                ok &= sq == want;
+                for j in 0..5u8 {
+                    if i != j {
+                        let (a, b) = (blade(1 << i), blade(1 << j));
+                        ok &= gp(&a, &b) == gp(&b, &a).neg();
+                    }
+                }
+            }
+            let _ = writeln!(
+                detail,
+                "{} square to 1, ē to −1, and every pair of distinct basis vectors anticommutes.",
+                names[..4].join(", ")
+            );
+            if ok {
+                Verdict::Confirmed
+            } else {
+                Verdict::Differs
+            }
+        }
+        k if k.starts_with("meet_def_") => check_meet_def(ctx, e, k, &mut method, &mut detail),
+        "rule_line_line_full" => super_rules::line_line_full(&mut method, &mut detail),
+        "reflect_vec" => {
+            let (pl, ln) = (aux_mv(&plane_aux("omega")), aux_mv(&line_aux("beta")));
+            let full = gp(&gp(&pl, &ln), &pl);
+            // e_i eē of the thesis = our e_i45 (the sign of thesis_name is +1 for these).
+            let v = [(25u8, 1u8), (26, 2), (28, 4)]
+                .iter()
+                .fold(SymMultivector::zero(), |acc, &(from, to)| {
+                    acc.add(&SymMultivector::blade(to, full.get(from)))
+                });
+            method = "the e1eē, e2eē, e3eē coefficients of P L P (generated products, aux forms) \
+                      read as a vector of R³"
+                .into();
+            let printed = parse_in(&scope, formula);
+            let verdict = judge(&printed, &v, &mut detail);
+            let n = [p("omega3"), p("omega4"), p("omega2")];
+            let d = [-p("beta4"), -p("beta5"), -p("beta6")];
+            let dot = |a: &[Poly; 3], b: &[Poly; 3]| -> Poly { (0..3).map(|i| &a[i] * &b[i]).sum() };
+            let (nd, nn) = (dot(&n, &d), dot(&n, &n));
+            let mirror = vec3([0, 1, 2].map(|i| &(&nn * &d[i]) - &(&(&nd * &n[i]) * &Poly::from(2))));
+            let _ = writeln!(
+                detail,
+                "The vector is {} × (|n|² d − 2 (n·d) n), the mirror image of the direction \
+                 d = x2 − x1 of the line in the plane with normal n = (ω3, ω4, ω2), scaled by |n|² \
+                 (a positive factor): the reflected direction, as the text says.",
+                v.ratio_to(&mirror)
+                    .map(|k| rat_str(&k))
+                    .unwrap_or_else(|| "not a multiple of".into())
+            );
+            verdict
+        }
+        "identity" => {
+            let text = e.field("computed").unwrap_or("0");
+            let circle = e.field("reduce") == Some("co si");
+            let fix = |m: SymMultivector| {
+                if circle {
+                    reduce_quadric(&m, "co", "si", -1)
+                } else {
+                    m
+                }
+            };
+            let computed = fix(scope.expand(&computed_in(&scope, text)).expect("expands"));
+            method = format!(
+                "`{text}` computed with the generated products{}",
+                if circle {
+                    ", both sides reduced modulo co² + si² = 1"
+                } else {
+                    ""
+                }
+            );
+            let steps: Vec<SymMultivector> = ctx
+                .steps(e)
+                .iter()
+                .map(|t| fix(scope.expand(&parse_in(&scope, t)).expect("expands")))
+                .collect();
+            judge_steps(&steps, &computed, &mut detail)
+        }
         "point" => {
             method = "2·up(x) from our conventions (x + ½|x|² n_inf + n_0, doubled)".into();
             judge(&printed(), &point_of("a"), &mut detail)
@@ -744,6 +1032,20 @@ fn evaluate(ctx: &Ctx, e: &Entry) -> (String, Verdict, String) {
         "reflect_pl" | "reflect_plp" => {
             check_reflect(formula, &scope, kind, &mut method, &mut detail)
         }
+        "meet_line_line_terms" => {
+            let (a, c, label) = meet_operands("meet_line_line");
+            let ig = gp(&thesis_dual(&aux_mv(&a)), &aux_mv(&c));
+            let target = ig.sub(&ig.grade(5));
+            method = format!(
+                "{label} term by term against ⟨(I A) C⟩₁ + ⟨(I A) C⟩₃, the geometric product \
+                 without its grade-5 part (what (A.48) simplifies it to), aux forms, generated products"
+            );
+            let v = judge(&parse_in(&scope, formula), &target, &mut detail);
+            if v == Verdict::Differs {
+                corrected(&mut detail, &target);
+            }
+            v
+        }
         k if k.starts_with("meet_") => check_meet(formula, &scope, k, &mut method, &mut detail),
         k if k.starts_with("defs_") => check_defs(fx, e, &scope, k, &mut method, &mut detail),
         k if k.starts_with("square_") => check_square(formula, &scope, k, &mut method, &mut detail),
@@ -789,6 +1091,64 @@ pub fn meet_aux(kind: &str) -> (SymMultivector, SymMultivector) {
     let (a, c) = (aux_mv(&a), aux_mv(&c));
     let ia = thesis_dual(&a);
     (lc(&ia, &c), gp(&ia, &c))
+}
+
+/// The definition `B = (A ∨ C) = (I A)·C` of an intersection, on the auxiliary-symbol forms
+/// of the operands: the contraction against our regressive product (generated).
+fn check_meet_def(
+    ctx: &Ctx,
+    e: &Entry,
+    kind: &str,
+    method: &mut String,
+    detail: &mut String,
+) -> Verdict {
+    let meet = kind.replacen("meet_def_", "meet_", 1);
+    let (a_text, c_text, label) = meet_operands(&meet);
+    let (a, c) = (aux_mv(&a_text), aux_mv(&c_text));
+    let contraction = lc(&thesis_dual(&a), &c);
+    let reg = regressive(&a, &c);
+    *method = format!(
+        "{label} = (I A) ⌋ C against our regressive product A ∨ C = undual(dual A ∧ dual C) \
+         (both generated), A, C the auxiliary-symbol forms of the operands"
+    );
+    let v = judge(&contraction, &reg, &mut String::new());
+    let factor = match &v {
+        Verdict::Confirmed => "1".to_string(),
+        Verdict::Scaled(k) => k.clone(),
+        _ => "no constant".to_string(),
+    };
+    let _ = writeln!(
+        detail,
+        "(I A) ⌋ C = {factor} · (A ∨ C), of grade {}: the meet, as the text says (∨ is fixed only \
+         up to such a factor by its references).",
+        grades(&reg)
+    );
+    if meet != "meet_line_line" {
+        return v;
+    }
+    let other = gp(&a, &thesis_dual(&c)).grade(1);
+    let _ = writeln!(
+        detail,
+        "\nThe third form (L1)·(IL2), read as the grade-1 part of L1 (I L2): {}.",
+        if other == contraction {
+            "equal to (I L1) ⌋ L2 (I is central)"
+        } else {
+            "**different** from (I L1) ⌋ L2"
+        }
+    );
+    let starred = thesis_dual(&reg);
+    let _ = writeln!(
+        detail,
+        "\nThe starred form (L1 ∨ L2)* = I (L1 ∨ L2) has grade {}, B has grade {}: the star does \
+         not belong (the other five intersections, (II.55) … (II.77), write B = (A ∨ C) without it).",
+        grades(&starred),
+        grades(&contraction)
+    );
+    if ctx.corrected || e.field("erratum").is_none() {
+        v
+    } else {
+        Verdict::Differs
+    }
 }
 
 fn check_meet(
@@ -882,6 +1242,16 @@ fn defs_target(kind: &str) -> Option<(SymMultivector, String)> {
             v.push(n_inf());
             (wedge_all(&v), plane_aux(sym))
         }
+        "defs_line_alpha" | "defs_line_34" => {
+            let (ls, sym): (&[&str], &str) = if kind == "defs_line_alpha" {
+                (&["a", "b"], "alpha")
+            } else {
+                (&["c", "d"], "beta")
+            };
+            let mut v = pts(ls);
+            v.push(n_inf());
+            (wedge_all(&v), line_aux(sym))
+        }
         "defs_sphere_1234" => (wedge_all(&pts(&["a", "b", "c", "d"])), sphere_aux("mu")),
         "defs_sphere_3456" => (wedge_all(&pts(&["c", "d", "q", "w"])), sphere_aux("mu")),
         "defs_sphere_5678" => (wedge_all(&pts(&["q", "w", "p", "z"])), sphere_aux("lambda")),
@@ -904,6 +1274,13 @@ fn check_defs(
     method: &mut String,
     detail: &mut String,
 ) -> Verdict {
+    if kind == "defs_line_pair" {
+        let (mut m1, mut m2) = (String::new(), String::new());
+        let v1 = check_defs(fx, e, scope, "defs_line_alpha", &mut m1, detail);
+        let v2 = check_defs(fx, e, scope, "defs_line_34", &mut m2, detail);
+        *method = format!("{m1}; {m2}");
+        return if v1 == v2 { v1 } else { Verdict::Differs };
+    }
     if kind == "defs_alpha" {
         // α_ijk = det(x_i, x_j, x_k) of the section's four sphere points.
         let letters: [&str; 4] = match e.id.as_str() {
