@@ -894,8 +894,8 @@ fn line_line_full_impl(detail: &mut String) -> Verdict {
     let mut ok = parts.rest.is_zero();
     ok &= ratio_line(
         "grade 1, s n with s = the e coefficient (the scalar of (II.54)) = k · det(d1, d2, x3 − x1)",
-        &[parts.s.clone()],
-        &[det.clone()],
+        std::slice::from_ref(&parts.s),
+        std::slice::from_ref(&det),
         detail,
     );
     ok &= ratio_line(
@@ -912,7 +912,7 @@ fn line_line_full_impl(detail: &mut String) -> Verdict {
     );
     ok &= ratio_line(
         "grade 5, the coefficient of I = k · d1 · d2",
-        &[parts.v.clone()],
+        std::slice::from_ref(&parts.v),
         &[dot_p(&d1, &d2)],
         detail,
     );

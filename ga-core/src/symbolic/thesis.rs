@@ -552,13 +552,12 @@ impl<'a> Evaluated<'a> {
         &self,
         o: &Self,
         f: impl Fn(&dyn Products, &SymMultivector, &SymMultivector) -> SymMultivector,
-        when_scalar: bool,
-    ) -> Result<Self, String> {
+    ) -> Self {
         let scalar = |v: &Self| v.m.iter().all(|(mask, _)| mask == 0);
         match self.products.or(o.products) {
-            Some(p) if !(scalar(self) || scalar(o)) => Ok(self.with(o, f(p, &self.m, &o.m))),
-            _ if when_scalar => Ok(self.with(o, self.m.gp(&o.m))),
-            _ => Ok(self.with(o, SymMultivector::zero())),
+            Some(p) if !(scalar(self) || scalar(o)) => self.with(o, f(p, &self.m, &o.m)),
+            // A scalar factor only scales, in every product.
+            _ => self.with(o, self.m.gp(&o.m)),
         }
     }
 }
@@ -577,8 +576,7 @@ impl Value for Evaluated<'_> {
         self.with(o, self.m.sub(&o.m))
     }
     fn mul(&self, o: &Self) -> Self {
-        self.combine(o, |p, a, b| p.geometric(a, b), true)
-            .unwrap_or_else(|_| unreachable!("products do not fail"))
+        self.combine(o, |p, a, b| p.geometric(a, b))
     }
     fn neg(&self) -> Self {
         Evaluated {
@@ -587,7 +585,7 @@ impl Value for Evaluated<'_> {
         }
     }
     fn wedge(&self, o: &Self) -> Result<Self, String> {
-        self.combine(o, |p, a, b| p.wedge(a, b), true)
+        Ok(self.combine(o, |p, a, b| p.wedge(a, b)))
     }
     fn left_contraction(&self, o: &Self) -> Result<Self, String> {
         // A scalar contracted onto anything scales it; anything of grade > 0 onto a scalar is 0.
@@ -598,7 +596,7 @@ impl Value for Evaluated<'_> {
         if scalar(o) {
             return Ok(self.with(o, SymMultivector::zero()));
         }
-        self.combine(o, |p, a, b| p.left_contraction(a, b), true)
+        Ok(self.combine(o, |p, a, b| p.left_contraction(a, b)))
     }
     fn as_constant(&self) -> Option<Rational> {
         <SymMultivector as Value>::as_constant(&self.m)
@@ -906,6 +904,40 @@ mod tests {
             m.to_notation(Notation::Thesis),
             "(alpha1 - 1/2) e1e2e - beta4 e3e1ē"
         );
+    }
+
+    /// Counts the products it is asked for, and computes them with the sparse ones.
+    struct Counting(std::cell::Cell<usize>);
+    impl Products for Counting {
+        fn geometric(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.gp(b)
+        }
+        fn wedge(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.wedge(b)
+        }
+        fn left_contraction(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.left_contraction(b)
+        }
+    }
+
+    #[test]
+    fn evaluate_uses_the_callers_products_and_names() {
+        let s = Scope::new();
+        let p = Counting(std::cell::Cell::new(0));
+        let names = |n: &str| (n == "Q").then(|| s.parse("e1 + e").unwrap());
+        // (e1 + e) ⌋ (e1 ∧ e2) = e2; scalars only scale and need no product.
+        let v = s.evaluate("2 Q ⌋ (e1 ∧ e2)", &p, &names).unwrap();
+        assert_eq!(v, s.parse("2 e2").unwrap());
+        assert_eq!(p.0.get(), 2, "one outer product and one contraction");
+        assert_eq!(
+            s.evaluate("e1 ⌋ 3", &p, &names).unwrap(),
+            SymMultivector::zero()
+        );
+        assert_eq!(s.parse("e1 ⌋ e1e2").unwrap(), s.parse("e2").unwrap());
+        assert!(s.evaluate("Q ⌋", &p, &names).is_err());
     }
 
     #[test]
