@@ -5,6 +5,8 @@
 //! cargo run --release -p ga-core --example thesis_derivations -- --write # also regenerate
 //!                                                      # ga-core/docs/thesis-derivations.md
 //! cargo run --release -p ga-core --example thesis_derivations -- --doc   # print the document
+//! cargo run --release -p ga-core --example thesis_derivations -- --list  # print the entry list
+//!                                             # (ga-core/tests/fixtures/thesis_equations.txt)
 //! ```
 
 mod checks;
@@ -12,6 +14,10 @@ mod checks;
 fn main() {
     let rows = checks::run();
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--list") {
+        print!("{}", checks::equation_list(&rows));
+        return;
+    }
     if args.iter().any(|a| a == "--doc") {
         print!("{}", checks::document(&rows));
         return;

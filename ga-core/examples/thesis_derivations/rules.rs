@@ -187,68 +187,43 @@ pub fn check_rule(
     match kind {
         "rule_line_line" => {
             *method = format!(
-                "the printed scalar on {CASES} exact cases per class (intersecting, parallel, skew); \
-                 symbolically against det(x2 − x1, x4 − x3, x3 − x1)"
+                "the printed scalar on {CASES} exact cases per class (intersecting, parallel, coincident, \
+                 skew); symbolically against det(x2 − x1, x4 − x3, x3 − x1)"
             );
             let f = e.field("formula").unwrap_or("0");
             let mut t = Tally::default();
             let mut wrong = false;
-            for class in ["intersecting", "parallel (distinct)", "skew"] {
+            for class in ["intersecting", "parallel (distinct)", "coincident", "skew"] {
                 for _ in 0..CASES {
-                    let (a, b, c, d) = match class {
-                        "intersecting" => {
-                            let p0 = g.v3();
-                            let (d1, d2) = loop {
-                                let (d1, d2) = (g.dir(), g.dir());
-                                if !is_zero3(&cross(&d1, &d2)) {
-                                    break (d1, d2);
-                                }
-                            };
-                            (
-                                sub(&p0, &d1),
-                                add(&p0, &mul(&q(2, 1), &d1)),
-                                add(&p0, &d2),
-                                sub(&p0, &mul(&q(3, 1), &d2)),
-                            )
-                        }
-                        "parallel (distinct)" => {
-                            let a = g.v3();
-                            let d1 = g.dir();
-                            let (off, _) = perp(&d1, &mut g);
-                            let c = add(&a, &off);
-                            (
-                                a.clone(),
-                                add(&a, &d1),
-                                c.clone(),
-                                add(&c, &mul(&q(2, 1), &d1)),
-                            )
-                        }
-                        _ => loop {
-                            let (a, b, c, d) = (g.v3(), g.v3(), g.v3(), g.v3());
-                            let vol = dot(&sub(&b, &a), &cross(&sub(&d, &c), &sub(&c, &a)));
-                            if !vol.is_zero() {
-                                break (a, b, c, d);
-                            }
-                        },
-                    };
+                    let (a, b, c, d) = line_pair(class, &mut g);
                     let parallel = is_zero3(&cross(&sub(&b, &a), &sub(&d, &c)));
                     let v = scalar_of(&eval(scope, f, &bind(&["a", "b", "c", "d"], &[a, b, c, d])));
-                    let seen = if v.is_zero() {
-                        "value = 0"
+                    // The printed rule: value = 0 ⇔ the lines share a point (intersecting or
+                    // coincident). The corrected one: value = 0 and d1 × d2 ≠ 0 ⇔ one point.
+                    let (seen, wrong_here) = if ctx.corrected {
+                        let one_point = v.is_zero() && !parallel;
+                        let seen = match (v.is_zero(), parallel) {
+                            (false, _) => "value ≠ 0 → no common point",
+                            (true, false) => "value = 0, d1 × d2 ≠ 0 → one point",
+                            (true, true) => "value = 0, d1 × d2 = 0 → parallel or the same line",
+                        };
+                        (seen, one_point != (class == "intersecting"))
                     } else {
-                        "value ≠ 0"
+                        let shares = matches!(class, "intersecting" | "coincident");
+                        let seen = if v.is_zero() {
+                            "value = 0"
+                        } else {
+                            "value ≠ 0"
+                        };
+                        (seen, v.is_zero() != shares)
                     };
-                    // Corrected rule: value = 0 and non-parallel directions.
-                    let predicted_meet = v.is_zero() && (!ctx.corrected || !parallel);
-                    if predicted_meet != (class == "intersecting") {
-                        wrong = true;
-                    }
+                    wrong |= wrong_here;
                     t.add(class, seen);
                 }
             }
             if ctx.corrected {
                 t.render(
-                    "Corrected rule \"value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet\":",
+                    "Corrected rule \"value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet in one point\" (the full classification is (II.54f)):",
                     detail,
                 );
                 return if wrong {
@@ -257,7 +232,10 @@ pub fn check_rule(
                     Verdict::RuleHolds
                 };
             }
-            t.render("Rule \"value = 0 ⇔ the lines intersect\":", detail);
+            t.render(
+                "Rule \"value = 0 ⇔ the lines intersect\" (wrong where a parallel pair gives 0):",
+                detail,
+            );
             // Symbolic: the value is a multiple of the coplanarity determinant.
             let full = scope
                 .expand(&scope.parse(f).expect("parses"))
@@ -275,7 +253,7 @@ pub fn check_rule(
                     let _ = writeln!(
                         detail,
                         "Proved symbolically: the value = {} · det(x2 − x1, x4 − x3, x3 − x1), which \
-                         vanishes exactly when the lines are coplanar: intersecting **or parallel**. \
+                         vanishes exactly when the lines are coplanar: intersecting, **parallel** or coincident. \
                          Corrected rule: value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet in one \
                          point (value = 0 with parallel directions: parallel or identical lines).",
                         super::rat_str(&k)
@@ -449,13 +427,17 @@ pub fn check_rule(
                 Verdict::RuleHolds
             }
         }
-        "rule_line_sphere" | "rule_sphere_plane" | "rule_sphere_sphere" => {
-            sphere_rule(fx, kind, scope, &formula_of, &mut g, method, detail).then_prove(
-                !ctx.corrected,
-                kind,
-                detail,
-            )
-        }
+        "rule_line_sphere" | "rule_sphere_plane" | "rule_sphere_sphere" => sphere_rule(
+            fx,
+            kind,
+            scope,
+            &formula_of,
+            ctx.corrected,
+            &mut g,
+            method,
+            detail,
+        )
+        .then_prove(!ctx.corrected, kind, detail),
         _ => {
             *detail = format!("no rule check for `{kind}`");
             Verdict::RuleFails
@@ -464,11 +446,13 @@ pub fn check_rule(
 }
 
 /// Classes by distance: `Two`, `Tangent`, `None`.
+#[allow(clippy::too_many_arguments)]
 fn sphere_rule(
     _fx: &Fixture,
     kind: &str,
     scope: &Scope,
     formula_of: &dyn Fn(&str) -> String,
+    corrected: bool,
     g: &mut Lcg,
     method: &mut String,
     detail: &mut String,
@@ -479,6 +463,7 @@ fn sphere_rule(
         _ => (
             "II.82",
             &[
+                "coincident",
                 "circle",
                 "externally tangent",
                 "internally tangent",
@@ -552,10 +537,14 @@ fn sphere_rule(
                     }
                     _ => {
                         let u = g.unit();
-                        let r2 = loop {
-                            let r2 = g.radius();
-                            if r2 != r {
-                                break r2;
+                        let r2 = if class == "coincident" {
+                            r.clone()
+                        } else {
+                            loop {
+                                let r2 = g.radius();
+                                if r2 != r {
+                                    break r2;
+                                }
                             }
                         };
                         let (sum, diff) = (&r + &r2, (&r - &r2).abs());
@@ -565,6 +554,7 @@ fn sphere_rule(
                             "internally tangent" => diff.clone(),
                             "apart" => &sum * q(3, 2),
                             "nested" => &diff * q(1, 2),
+                            // concentric, and the same sphere through four other points
                             _ => Rational::zero(),
                         };
                         let c2 = add(&c, &mul(&dist, &u));
@@ -590,20 +580,40 @@ fn sphere_rule(
             let printed = sign(&scalar_of(&eval(scope, &fb2, &vals)));
             let bm = lc(&thesis_dual(&a_mv), &c_mv);
             let computed = sign(&scalar_of(&gp(&bm, &bm)));
+            // The thesis's rule answers by the sign of B² alone; coincident spheres (B = 0)
+            // fit none of its three cases. The corrected rule tells them apart by B = 0.
             let truth_says = match class {
                 "two points" | "circle" => 1,
                 "tangent" | "externally tangent" | "internally tangent" => 0,
+                "coincident" => 2,
                 _ => -1,
             };
-            if printed != truth_says {
+            let said = if corrected && bm.is_zero() {
+                2
+            } else {
+                printed
+            };
+            if said != truth_says {
                 wrong = true;
             }
-            printed_tally.add(class, &sign_word(printed, "printed B²"));
-            computed_tally.add(class, &sign_word(computed, "computed ⟨B B⟩₀"));
+            let zero = if bm.is_zero() { "B = 0, " } else { "" };
+            printed_tally.add(
+                class,
+                &format!("{zero}{}", sign_word(printed, "printed B²")),
+            );
+            computed_tally.add(
+                class,
+                &format!("{zero}{}", sign_word(computed, "computed ⟨B B⟩₀")),
+            );
         }
     }
     printed_tally.render(
-        "The thesis's rule (B² > 0: meet, = 0: tangent, < 0: no meeting) with its printed B²:",
+        if corrected && kind == "rule_sphere_sphere" {
+            "The corrected rule (B = 0: the same sphere; otherwise B² > 0: meet, = 0: tangent, \
+             < 0: no meeting), B² as printed once corrected:"
+        } else {
+            "The thesis's rule (B² > 0: meet, = 0: tangent, < 0: no meeting) with its printed B²:"
+        },
         detail,
     );
     computed_tally.render("The same cases with the correctly computed B:", detail);
@@ -759,5 +769,282 @@ fn prove_sphere_rule(kind: &str) -> String {
             super::rat_str(&k)
         ),
         None => format!("⟨B B⟩₀ from dual forms is not a constant multiple of {what}."),
+    }
+}
+
+/// The line–line test from the full product `(I L1) L2` (all grades), derived and proved here.
+pub fn line_line_full(method: &mut String, detail: &mut String) -> Verdict {
+    *method = "(I L1) L2 with the generated geometric product, L1 = P1∧P2∧n, L2 = P3∧P4∧n from \
+               points; its parts identified symbolically, then the rule run on exact cases"
+        .into();
+    line_line_full_impl(detail)
+}
+
+/// The parts of `G = (I L1) L2`: the grade-1 coefficient `s` (of n_inf), the e_i eē part `w`
+/// (thesis spelling), the e_j e_k n part `u` (coefficients of e2e3e, e3e1e, e1e2e) and the
+/// grade-5 coefficient `v` (of I); `rest` is what is left once these are taken out.
+struct LineLineParts {
+    s: Poly,
+    w: [Poly; 3],
+    u: [Poly; 3],
+    v: Poly,
+    rest: SymMultivector,
+}
+
+fn line_line_parts(g: &SymMultivector) -> LineLineParts {
+    use ga_core::symbolic::thesis::thesis_name;
+    // Thesis-spelled coefficient of the blade with our bitmask `m`.
+    let t = |m: u8| {
+        let (sign, _) = thesis_name(m);
+        if sign < 0 {
+            -g.get(m)
+        } else {
+            g.get(m)
+        }
+    };
+    let s = g.get(8);
+    let w = [t(25), t(26), t(28)];
+    // e2e3e = e234 (mask 14), e3e1e (mask 13), e1e2e (mask 11); their ē partners 22, 21, 19.
+    let u = [t(14), t(13), t(11)];
+    let v = g.get(31);
+    let mut known = SymMultivector::blade(8, s.clone())
+        .add(&SymMultivector::blade(16, s.clone()))
+        .add(&SymMultivector::blade(31, v.clone()));
+    for (k, &(me, mb)) in [(14u8, 22u8), (13, 21), (11, 19)].iter().enumerate() {
+        let (sign, _) = thesis_name(me);
+        let c = if sign < 0 {
+            -u[k].clone()
+        } else {
+            u[k].clone()
+        };
+        let (sb, _) = thesis_name(mb);
+        let cb = if sb * sign < 0 { -c.clone() } else { c.clone() };
+        known = known
+            .add(&SymMultivector::blade(me, c))
+            .add(&SymMultivector::blade(mb, cb));
+    }
+    for (k, m) in [25u8, 26, 28].iter().enumerate() {
+        let (sign, _) = thesis_name(*m);
+        let c = if sign < 0 {
+            -w[k].clone()
+        } else {
+            w[k].clone()
+        };
+        known = known.add(&SymMultivector::blade(*m, c));
+    }
+    LineLineParts {
+        s,
+        w,
+        u,
+        v,
+        rest: g.sub(&known),
+    }
+}
+
+fn line_from(a: [Poly; 3], b: [Poly; 3]) -> SymMultivector {
+    wedge_all(&[point2(a), point2(b), n_inf()])
+}
+
+fn ratio_line(what: &str, got: &[Poly], want: &[Poly], detail: &mut String) -> bool {
+    let g = SymMultivector::from_coefficients(&[]);
+    let mut gm = g.clone();
+    let mut wm = g;
+    for (k, (x, y)) in got.iter().zip(want).enumerate() {
+        gm = gm.add(&SymMultivector::blade(k as u8, x.clone()));
+        wm = wm.add(&SymMultivector::blade(k as u8, y.clone()));
+    }
+    match gm.ratio_to(&wm) {
+        Some(k) => {
+            let _ = writeln!(detail, "- {what}: k = {}", super::rat_str(&k));
+            true
+        }
+        None if gm == wm => {
+            let _ = writeln!(detail, "- {what}: equal");
+            true
+        }
+        None => {
+            let _ = writeln!(detail, "- {what}: **not** a constant multiple");
+            false
+        }
+    }
+}
+
+fn line_line_full_impl(detail: &mut String) -> Verdict {
+    let pt = |l: &str| [1, 2, 3].map(|i| coord(l, i));
+    let (a, b, c, d) = (pt("a"), pt("b"), pt("c"), pt("d"));
+    let l1 = line_from(a.clone(), b.clone());
+    let l2 = line_from(c.clone(), d.clone());
+    let g = gp(&thesis_dual(&l1), &l2);
+    let parts = line_line_parts(&g);
+    let (d1, d2, w0) = (diff_p("b", "a"), diff_p("d", "c"), diff_p("c", "a"));
+    let m1 = cross_p(&pt("a"), &pt("b"));
+    let m2 = cross_p(&pt("c"), &pt("d"));
+    let det = dot_p(&d1, &cross_p(&d2, &w0));
+    let cross = cross_p(&d1, &d2);
+    let moment = {
+        let x = cross_p(&d1, &m2);
+        let y = cross_p(&m1, &d2);
+        [0, 1, 2].map(|i| &x[i] + &y[i])
+    };
+    let _ = writeln!(
+        detail,
+        "Proved symbolically, for L1 through x1, x2 (direction d1 = x2 − x1, moment m1 = x1 × x2) \
+         and L2 through x3, x4 (d2, m2), the parts of G = (I L1) L2 (thesis spelling):\n"
+    );
+    let mut ok = parts.rest.is_zero();
+    ok &= ratio_line(
+        "grade 1, s n with s = the e coefficient (the scalar of (II.54)) = k · det(d1, d2, x3 − x1)",
+        std::slice::from_ref(&parts.s),
+        std::slice::from_ref(&det),
+        detail,
+    );
+    ok &= ratio_line(
+        "grade 3, the e1eē, e2eē, e3eē coefficients w = k · d1 × d2",
+        &parts.w,
+        &cross,
+        detail,
+    );
+    ok &= ratio_line(
+        "grade 3, the e2e3 n, e3e1 n, e1e2 n coefficients u = k · (d1 × m2 + m1 × d2)",
+        &parts.u,
+        &moment,
+        detail,
+    );
+    ok &= ratio_line(
+        "grade 5, the coefficient of I = k · d1 · d2",
+        std::slice::from_ref(&parts.v),
+        &[dot_p(&d1, &d2)],
+        detail,
+    );
+    let _ = writeln!(
+        detail,
+        "- nothing else: {}\n",
+        if parts.rest.is_zero() {
+            "G = s n + (w and u parts) + v I exactly"
+        } else {
+            "**G has other terms**"
+        }
+    );
+    // Parallel lines: x4 = x3 + t (x2 − x1). Then w = 0 and u = k t (d1 × ((x3 − x1) × d1)),
+    // which vanishes only when x3 lies on L1.
+    let t = Poly::var("t");
+    let dp = [0, 1, 2].map(|i| &c[i] + &(&t * &d1[i]));
+    let gp_par = gp(&thesis_dual(&l1), &line_from(c.clone(), dp));
+    let pp = line_line_parts(&gp_par);
+    let target = cross_p(&d1, &cross_p(&w0, &d1)).map(|x| &x * &t);
+    let par_ok =
+        pp.w.iter().all(ga_core::scalar::Ring::is_zero) && ga_core::scalar::Ring::is_zero(&pp.s);
+    ok &= par_ok;
+    let _ = writeln!(
+        detail,
+        "For parallel lines (x4 = x3 + t (x2 − x1)): s = 0 and w = 0{}; and",
+        if par_ok { "" } else { " **fails**" }
+    );
+    ok &= ratio_line(
+        "u = k · t · d1 × ((x3 − x1) × d1), zero exactly when x3 − x1 ∥ d1, i.e. x3 on L1 (coincident lines)",
+        &pp.u,
+        &target,
+        detail,
+    );
+    let _ = writeln!(
+        detail,
+        "\n**The rule** (B = (I L1) L2, the full geometric product):\n\n\
+         1. s ≠ 0 (grade 1): the lines are skew;\n\
+         2. s = 0 and w ≠ 0: they meet in one point (coplanar, not parallel);\n\
+         3. s = 0, w = 0 and u ≠ 0: parallel and distinct;\n\
+         4. s = 0, w = 0, u = 0 (B = v I, only grade 5 is left): the same line.\n\n\
+         The thesis's test (II.54) is step 1 alone: s = 0 says \"coplanar\" (cases 2–4), not \
+         \"intersecting\".\n"
+    );
+    // Exact cases against Euclidean ground truth.
+    let mut gen = Lcg(0x11_2e_54);
+    let mut tally = Tally::default();
+    for class in ["intersecting", "parallel (distinct)", "coincident", "skew"] {
+        for _ in 0..CASES {
+            let (a, b, c, d) = line_pair(class, &mut gen);
+            let l1 = wedge_all(&[cpoint(&a), cpoint(&b), n_inf()]);
+            let l2 = wedge_all(&[cpoint(&c), cpoint(&d), n_inf()]);
+            let pr = line_line_parts(&gp(&thesis_dual(&l1), &l2));
+            let z = |x: &[Poly]| x.iter().all(ga_core::scalar::Ring::is_zero);
+            let predicted = if !ga_core::scalar::Ring::is_zero(&pr.s) {
+                "skew"
+            } else if !z(&pr.w) {
+                "intersecting"
+            } else if !z(&pr.u) {
+                "parallel (distinct)"
+            } else {
+                "coincident"
+            };
+            if predicted != class {
+                ok = false;
+            }
+            let seen = format!(
+                "s {}, w {}, u {}",
+                if ga_core::scalar::Ring::is_zero(&pr.s) {
+                    "= 0"
+                } else {
+                    "≠ 0"
+                },
+                if z(&pr.w) { "= 0" } else { "≠ 0" },
+                if z(&pr.u) { "= 0" } else { "≠ 0" }
+            );
+            tally.add(class, &format!("{seen} → {predicted}"));
+        }
+    }
+    tally.render("The rule on exact rational cases:", detail);
+    if ok {
+        Verdict::RuleHolds
+    } else {
+        Verdict::RuleFails
+    }
+}
+
+/// Two lines (two points each) of the given ground-truth class.
+fn line_pair(class: &str, g: &mut Lcg) -> (V3, V3, V3, V3) {
+    match class {
+        "intersecting" => {
+            let p0 = g.v3();
+            let (d1, d2) = loop {
+                let (d1, d2) = (g.dir(), g.dir());
+                if !is_zero3(&cross(&d1, &d2)) {
+                    break (d1, d2);
+                }
+            };
+            (
+                sub(&p0, &d1),
+                add(&p0, &mul(&q(2, 1), &d1)),
+                add(&p0, &d2),
+                sub(&p0, &mul(&q(3, 1), &d2)),
+            )
+        }
+        "parallel (distinct)" => {
+            let a = g.v3();
+            let d1 = g.dir();
+            let (off, _) = perp(&d1, g);
+            let c = add(&a, &off);
+            (
+                a.clone(),
+                add(&a, &d1),
+                c.clone(),
+                add(&c, &mul(&q(2, 1), &d1)),
+            )
+        }
+        "coincident" => {
+            let a = g.v3();
+            let d1 = g.dir();
+            (
+                a.clone(),
+                add(&a, &d1),
+                add(&a, &mul(&q(-1, 2), &d1)),
+                add(&a, &mul(&q(5, 2), &d1)),
+            )
+        }
+        _ => loop {
+            let (a, b, c, d) = (g.v3(), g.v3(), g.v3(), g.v3());
+            let vol = dot(&sub(&b, &a), &cross(&sub(&d, &c), &sub(&c, &a)));
+            if !vol.is_zero() {
+                break (a, b, c, d);
+            }
+        },
     }
 }

@@ -5,7 +5,7 @@
 //! ```text
 //! expr    := ['+'|'-'] term (('+'|'-') term)*
 //! term    := wedge (('*' | '/' | <juxtaposition>) wedge)*      // '/' by constants only
-//! wedge   := power ('∧' power)*
+//! wedge   := power (('∧' | '⌋') power)*                     // outer, left contraction
 //! power   := primary ['^' integer]
 //! primary := number | identifier | '(' expr ')' | '-' primary
 //! ```
@@ -24,6 +24,10 @@ pub(crate) trait Value: Sized + Clone {
     fn mul(&self, o: &Self) -> Self;
     fn neg(&self) -> Self;
     fn wedge(&self, o: &Self) -> Result<Self, String>;
+    /// Left contraction `self ⌋ o` (only multivector values have one).
+    fn left_contraction(&self, _o: &Self) -> Result<Self, String> {
+        Err("`⌋` is not defined for scalar polynomials".into())
+    }
     fn as_constant(&self) -> Option<Rational>;
     fn pow(&self, k: u32) -> Self {
         let mut r = Self::constant(<Rational as One>::one());
@@ -110,7 +114,7 @@ fn tokenize(s: &str) -> Result<Vec<(usize, Tok)>, (usize, String)> {
             }
             out.push((pos, Tok::Ident(name)));
             i = j;
-        } else if "+-*/^()∧".contains(c) {
+        } else if "+-*/^()∧⌋".contains(c) {
             out.push((pos, Tok::Op(c)));
             i += 1;
         } else {
@@ -194,6 +198,9 @@ impl<V: Value> Parser<'_, V> {
             if self.eat('∧') {
                 let rhs = self.power()?;
                 acc = acc.wedge(&rhs).map_err(|m| (pos, m))?;
+            } else if self.eat('⌋') {
+                let rhs = self.power()?;
+                acc = acc.left_contraction(&rhs).map_err(|m| (pos, m))?;
             } else {
                 return Ok(acc);
             }

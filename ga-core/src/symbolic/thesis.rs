@@ -508,12 +508,98 @@ impl Value for SymMultivector {
     fn wedge(&self, o: &Self) -> Result<Self, String> {
         Ok(SymMultivector::wedge(self, o))
     }
+    fn left_contraction(&self, o: &Self) -> Result<Self, String> {
+        Ok(SymMultivector::left_contraction(self, o))
+    }
     fn as_constant(&self) -> Option<Rational> {
         match self.coeffs.len() {
             0 => Some(<Rational as Zero>::zero()),
             1 => self.coeffs.get(&0).and_then(|p| p.as_constant()),
             _ => None,
         }
+    }
+}
+
+/// The products an expression is evaluated with by [`Scope::evaluate`]: supplied by the caller,
+/// so that a check can compute with an implementation other than [`SymMultivector`]'s own
+/// (for example the generated `cga` products over [`Poly`]).
+pub trait Products {
+    /// Geometric product `a b`.
+    fn geometric(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector;
+    /// Outer product `a ∧ b`.
+    fn wedge(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector;
+    /// Left contraction `a ⌋ b`.
+    fn left_contraction(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector;
+}
+
+/// A value of [`Scope::evaluate`]: a multivector and the products to combine it with (`None`
+/// for constants, which only scale).
+#[derive(Clone)]
+struct Evaluated<'a> {
+    m: SymMultivector,
+    products: Option<&'a dyn Products>,
+}
+
+impl<'a> Evaluated<'a> {
+    fn with(&self, o: &Self, m: SymMultivector) -> Self {
+        Evaluated {
+            m,
+            products: self.products.or(o.products),
+        }
+    }
+    /// Combines two values: by scaling when one is a constant, else with the products.
+    fn combine(
+        &self,
+        o: &Self,
+        f: impl Fn(&dyn Products, &SymMultivector, &SymMultivector) -> SymMultivector,
+    ) -> Self {
+        let scalar = |v: &Self| v.m.iter().all(|(mask, _)| mask == 0);
+        match self.products.or(o.products) {
+            Some(p) if !(scalar(self) || scalar(o)) => self.with(o, f(p, &self.m, &o.m)),
+            // A scalar factor only scales, in every product.
+            _ => self.with(o, self.m.gp(&o.m)),
+        }
+    }
+}
+
+impl Value for Evaluated<'_> {
+    fn constant(c: Rational) -> Self {
+        Evaluated {
+            m: SymMultivector::scalar(Poly::constant(c)),
+            products: None,
+        }
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.with(o, self.m.add(&o.m))
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.with(o, self.m.sub(&o.m))
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.combine(o, |p, a, b| p.geometric(a, b))
+    }
+    fn neg(&self) -> Self {
+        Evaluated {
+            m: self.m.neg(),
+            products: self.products,
+        }
+    }
+    fn wedge(&self, o: &Self) -> Result<Self, String> {
+        Ok(self.combine(o, |p, a, b| p.wedge(a, b)))
+    }
+    fn left_contraction(&self, o: &Self) -> Result<Self, String> {
+        // A scalar contracted onto anything scales it; anything of grade > 0 onto a scalar is 0.
+        let scalar = |v: &Self| v.m.iter().all(|(mask, _)| mask == 0);
+        if scalar(self) {
+            return Ok(self.with(o, self.m.gp(&o.m)));
+        }
+        if scalar(o) {
+            return Ok(self.with(o, SymMultivector::zero()));
+        }
+        Ok(self.combine(o, |p, a, b| p.left_contraction(a, b)))
+    }
+    fn as_constant(&self) -> Option<Rational> {
+        <SymMultivector as Value>::as_constant(&self.m)
     }
 }
 
@@ -634,6 +720,28 @@ impl Scope {
     /// Parses an expression; auxiliary symbols stay symbolic.
     pub fn parse(&self, text: &str) -> Result<SymMultivector, SymbolicError> {
         parse_with(text, &|n: &str| self.resolve(n))
+    }
+    /// Evaluates an expression with the caller's `products`: identifiers are looked up in
+    /// `names` first (values the caller builds, for example conformal points from its own
+    /// conventions), then as in [`Scope::parse`]. Juxtaposition is the geometric product, `∧`
+    /// the outer product and `⌋` the left contraction.
+    pub fn evaluate(
+        &self,
+        text: &str,
+        products: &dyn Products,
+        names: &dyn Fn(&str) -> Option<SymMultivector>,
+    ) -> Result<SymMultivector, SymbolicError> {
+        let resolve = |n: &str| -> Result<Evaluated<'_>, String> {
+            let m = match names(n) {
+                Some(m) => m,
+                None => self.resolve(n)?,
+            };
+            Ok(Evaluated {
+                m,
+                products: Some(products),
+            })
+        };
+        parse_with(text, &resolve).map(|v| v.m)
     }
     /// The fully expanded value (in point coordinates) of every auxiliary symbol (the last
     /// definition of each name).
@@ -796,6 +904,40 @@ mod tests {
             m.to_notation(Notation::Thesis),
             "(alpha1 - 1/2) e1e2e - beta4 e3e1ē"
         );
+    }
+
+    /// Counts the products it is asked for, and computes them with the sparse ones.
+    struct Counting(std::cell::Cell<usize>);
+    impl Products for Counting {
+        fn geometric(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.gp(b)
+        }
+        fn wedge(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.wedge(b)
+        }
+        fn left_contraction(&self, a: &SymMultivector, b: &SymMultivector) -> SymMultivector {
+            self.0.set(self.0.get() + 1);
+            a.left_contraction(b)
+        }
+    }
+
+    #[test]
+    fn evaluate_uses_the_callers_products_and_names() {
+        let s = Scope::new();
+        let p = Counting(std::cell::Cell::new(0));
+        let names = |n: &str| (n == "Q").then(|| s.parse("e1 + e").unwrap());
+        // (e1 + e) ⌋ (e1 ∧ e2) = e2; scalars only scale and need no product.
+        let v = s.evaluate("2 Q ⌋ (e1 ∧ e2)", &p, &names).unwrap();
+        assert_eq!(v, s.parse("2 e2").unwrap());
+        assert_eq!(p.0.get(), 2, "one outer product and one contraction");
+        assert_eq!(
+            s.evaluate("e1 ⌋ 3", &p, &names).unwrap(),
+            SymMultivector::zero()
+        );
+        assert_eq!(s.parse("e1 ⌋ e1e2").unwrap(), s.parse("e2").unwrap());
+        assert!(s.evaluate("Q ⌋", &p, &names).is_err());
     }
 
     #[test]
