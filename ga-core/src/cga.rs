@@ -43,6 +43,8 @@ ga_macros::algebra! {
         Odd: grades 1 3 5,
     },
     dense: Multivector,
+    // WGSL for the single-grade types (module `cga::wgsl`), used by cga-collide's GPU batches.
+    wgsl: [Vector, Bivector, Trivector, Quadvector, Pseudoscalar],
 }
 
 /// The point at infinity `n_inf = e4 + e5` (the thesis's `n`).

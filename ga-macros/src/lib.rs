@@ -21,23 +21,33 @@
 //!
 //! The declaration: `name` (a label for docs), `signature` (`+1`, `-1` or `0` per generator,
 //! at most 6), optional `basis` names (default `e1 ... en`), `types` (each by `grade K`,
-//! `grades K L ...` or an explicit blade list `[1, e12, e13]`), and optional `dense` (the name
-//! of the all-blades type, default `Multivector`). See the crate README for what is generated.
+//! `grades K L ...` or an explicit blade list `[1, e12, e13]`), optional `dense` (the name
+//! of the all-blades type, default `Multivector`) and optional `wgsl: [Type, ...]` (also emit
+//! WGSL shader source for those types and their products, in a module `wgsl`: string constants
+//! `F32`, `F64`, `RING` and a table `FUNCTIONS`). See the crate README for what is generated.
 #![forbid(unsafe_code)]
 
 mod blade;
 mod emit;
 mod model;
 mod parse;
+mod wgsl;
 
 use proc_macro::TokenStream;
 
 /// Generates the types and products of one geometric algebra; see the crate documentation.
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
-    let declaration = syn::parse_macro_input!(input as parse::Declaration);
-    match model::Algebra::from_declaration(declaration) {
-        Ok(algebra) => emit::emit(&algebra).into(),
+    let mut declaration = syn::parse_macro_input!(input as parse::Declaration);
+    let shaders = declaration.wgsl.take();
+    match model::Algebra::from_declaration(declaration)
+        .and_then(|a| Ok((wgsl::emit(&a, shaders.as_deref())?, a)))
+    {
+        Ok((shaders, algebra)) => {
+            let mut tokens = emit::emit(&algebra);
+            tokens.extend(shaders);
+            tokens.into()
+        }
         Err(e) => e.to_compile_error().into(),
     }
 }

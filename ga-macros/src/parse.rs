@@ -36,6 +36,8 @@ pub struct Declaration {
     pub types: Vec<TypeDecl>,
     pub types_span: Span,
     pub dense: Option<Ident>,
+    /// `wgsl: [Vector, ...]`: the types to emit WGSL shader source for (opt-in).
+    pub wgsl: Option<Vec<Ident>>,
 }
 
 impl Parse for Declaration {
@@ -45,6 +47,7 @@ impl Parse for Declaration {
         let mut basis = None;
         let mut types = None;
         let mut dense = None;
+        let mut wgsl = None;
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
@@ -88,12 +91,21 @@ impl Parse for Declaration {
                     }
                     dense = Some(input.parse::<Ident>()?);
                 }
+                "wgsl" => {
+                    if wgsl.is_some() {
+                        return Err(duplicate());
+                    }
+                    let content;
+                    bracketed!(content in input);
+                    let idents = content.parse_terminated(Ident::parse, Token![,])?;
+                    wgsl = Some(idents.into_iter().collect::<Vec<_>>());
+                }
                 other => {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
                             "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
-                             `types`, `dense`"
+                             `types`, `dense`, `wgsl`"
                         ),
                     ))
                 }
@@ -123,6 +135,7 @@ impl Parse for Declaration {
             types,
             types_span,
             dense,
+            wgsl,
         })
     }
 }
