@@ -20,6 +20,8 @@ pub mod error;
 pub mod euclid;
 pub mod experiment;
 pub mod filter;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod intersect;
 pub mod oracle;
 pub mod plot;
