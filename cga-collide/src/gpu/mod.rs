@@ -404,6 +404,44 @@ impl Device {
         })
     }
 
+    /// The indices `k` of the pairs `pairs[k]` that intersect, sorted: arbitrary
+    /// shape–triangle pairs in one batch per kind of shape.
+    pub fn pair_hits(&self, pairs: &[(Query, Triangle)]) -> Result<Batch<usize>, GpuError> {
+        let mut out = Batch {
+            hits: Vec::new(),
+            tested: 0,
+            flagged: 0,
+            device: self.name.clone(),
+        };
+        for kind in 0..4 {
+            let index: Vec<usize> = (0..pairs.len())
+                .filter(|&k| pairs[k].0.kind() == kind)
+                .collect();
+            if index.is_empty() {
+                continue;
+            }
+            let queries: Vec<[f64; 12]> = index.iter().map(|&k| pairs[k].0.packed()).collect();
+            let vertices = index.iter().flat_map(|&k| *pairs[k].1.vertices()).collect();
+            let faces = (0..index.len() as u32)
+                .map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
+                .collect();
+            // Triangle vertices are finite, so the mesh is valid.
+            let mesh = TriMesh::new(vertices, faces)
+                .unwrap_or_else(|_| unreachable!("triangles have finite vertices"));
+            let diagonal: Vec<(u32, u32)> = (0..index.len() as u32).map(|k| (k, k)).collect();
+            let batch = self.run(kind, &queries, &mesh, Some(&diagonal), |i, _| {
+                let (q, t) = &pairs[index[i as usize]];
+                q.intersects(t)
+            })?;
+            out.hits
+                .extend(batch.hits.iter().map(|&(i, _)| index[i as usize]));
+            out.tested += batch.tested;
+            out.flagged += batch.flagged;
+        }
+        out.hits.sort_unstable();
+        Ok(out)
+    }
+
     /// Every pair `(i, j)` of a triangle `i` of `a` and `j` of `b` that intersect, sorted: brute
     /// force over all `|a|·|b|` pairs, as the thesis's GPU batch.
     pub fn intersecting_pairs(
@@ -616,7 +654,13 @@ impl Device {
         (n_queries, n_items, first, last): (u32, u32, u32, u32),
         inputs: [&wgpu::Buffer; 3],
     ) -> Result<Dispatched, GpuError> {
-        let mut capacity: u32 = 1 << 16;
+        // Room for every answer of a small dispatch; grown on demand for large ones.
+        let tests = if mode == 1 {
+            n_items as u64
+        } else {
+            n_items as u64 * (last - first) as u64
+        };
+        let mut capacity = tests.clamp(16, 1 << 16) as u32;
         loop {
             let groups = n_items.div_ceil(WORKGROUP).max(1);
             let max_dim = self.device.limits().max_compute_workgroups_per_dimension;
