@@ -5,9 +5,9 @@
 
 use std::hint::black_box;
 
-use cga_collide::bvh::{BuildStrategy, Bvh};
-use cga_collide::mesh::TriMesh;
+use cga_collide::hierarchy::bvh::{BuildStrategy, Bvh};
 use cga_collide::query::{Collider, Mode};
+use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Segment, Sphere};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use nalgebra::{Isometry3, Point3};

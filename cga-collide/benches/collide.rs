@@ -7,11 +7,11 @@
 
 use std::hint::black_box;
 
-use cga_collide::adversarial::{triangle_pairs, SplitMix64};
-use cga_collide::euclid;
-use cga_collide::filter::{ExactKernel, Kernel};
+use cga_collide::exact::predicates::{Orient3d, Orient3dCga};
+use cga_collide::exact::{ExactKernel, Kernel};
 use cga_collide::nalgebra::Isometry3;
-use cga_collide::predicates::{Orient3d, Orient3dCga};
+use cga_collide::query::baseline;
+use cga_collide::testing::adversarial::{triangle_pairs, SplitMix64};
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use parry3d_f64::query::intersection_test;
@@ -84,7 +84,7 @@ fn tri_tri(c: &mut Criterion) {
             bch.iter(|| {
                 pairs
                     .iter()
-                    .filter(|(a, b)| euclid::moller_tri_tri(black_box(a), black_box(b)))
+                    .filter(|(a, b)| baseline::moller_tri_tri(black_box(a), black_box(b)))
                     .count()
             })
         });
@@ -125,7 +125,7 @@ fn seg_tri(c: &mut Criterion) {
             pairs
                 .iter()
                 .filter(|(s, t)| {
-                    euclid::moller_trumbore_segment_triangle(black_box(s), black_box(t))
+                    baseline::moller_trumbore_segment_triangle(black_box(s), black_box(t))
                 })
                 .count()
         })
@@ -173,7 +173,7 @@ fn spheres(c: &mut Criterion) {
     g.bench_function("tri_ball/euclid_f64", |b| {
         b.iter(|| {
             tris.iter()
-                .filter(|(t, s)| euclid::triangle_ball(black_box(t), black_box(s)))
+                .filter(|(t, s)| baseline::triangle_ball(black_box(t), black_box(s)))
                 .count()
         })
     });
@@ -188,7 +188,7 @@ fn spheres(c: &mut Criterion) {
         b.iter(|| {
             tris.iter()
                 .filter(|(t, s)| {
-                    euclid::triangle_sphere(black_box(t), &Sphere::from(*black_box(s)))
+                    baseline::triangle_sphere(black_box(t), &Sphere::from(*black_box(s)))
                 })
                 .count()
         })
@@ -203,7 +203,7 @@ fn spheres(c: &mut Criterion) {
     g.bench_function("seg_ball/euclid_f64", |b| {
         b.iter(|| {
             segs.iter()
-                .filter(|(t, s)| euclid::segment_ball(black_box(t), black_box(s)))
+                .filter(|(t, s)| baseline::segment_ball(black_box(t), black_box(s)))
                 .count()
         })
     });
@@ -217,7 +217,7 @@ fn spheres(c: &mut Criterion) {
     g.bench_function("sphere_sphere/euclid_f64", |b| {
         b.iter(|| {
             sph.iter()
-                .filter(|(t, s)| euclid::sphere_sphere(black_box(t), black_box(s)))
+                .filter(|(t, s)| baseline::sphere_sphere(black_box(t), black_box(s)))
                 .count()
         })
     });

@@ -1,6 +1,6 @@
-//! Octree sphere trees (seed paper `003`): build time per depth, and one collision query on the
+//! Octree sphere trees (Fuentes Socorro's method): build time per depth, and one collision query on the
 //! `cga` main job's placement (bunny00 vs armadillo, `--unit`, armadillo moved by
-//! `(0.3, 0.05, 0)`) by the seed's method and the simultaneous descent, with the exact BVH
+//! `(0.3, 0.05, 0)`) by the paper's method and the simultaneous descent, with the exact BVH
 //! query (`Collider::collides_solid`) as the baseline in the same run; plus a near miss (the
 //! solids do not collide, the depth-5 trees do: a false positive of the approximation).
 //!
@@ -8,11 +8,11 @@
 
 use std::hint::black_box;
 
-use cga_collide::mesh::TriMesh;
+use cga_collide::hierarchy::sphere_tree::collide;
+use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::nalgebra::{Isometry3, UnitQuaternion, Vector3};
 use cga_collide::query::{Collider, Mode};
-use cga_collide::sphere_tree::collide;
-use cga_collide::sphere_tree::octree::{build, BuildOptions};
+use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 
 fn build_time(c: &mut Criterion) {
@@ -47,16 +47,16 @@ fn queries(c: &mut Criterion) {
         let pb = b.placed(&iso).expect("placed");
         let mb = tb.transformed(&iso);
         eprintln!(
-            "{name}: exact {}, seed {}, simultaneous {}",
+            "{name}: exact {}, paper {}, simultaneous {}",
             a.collides_solid(&pb, Mode::Bvh),
-            collide::seed(&ta, &mb).collides,
+            collide::paper_method(&ta, &mb).collides,
             collide::simultaneous(&ta, &mb).collides
         );
         g.bench_function(format!("{name}/exact_bvh_baseline"), |bch| {
             bch.iter(|| black_box(a.collides_solid(&pb, Mode::Bvh)))
         });
-        g.bench_function(format!("{name}/seed"), |bch| {
-            bch.iter(|| black_box(collide::seed(&ta, &mb).collides))
+        g.bench_function(format!("{name}/paper"), |bch| {
+            bch.iter(|| black_box(collide::paper_method(&ta, &mb).collides))
         });
         g.bench_function(format!("{name}/simultaneous"), |bch| {
             bch.iter(|| black_box(collide::simultaneous(&ta, &mb).collides))

@@ -34,7 +34,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     let device = Device::new()?;
     println!("device: {} ({:?})", device.name(), device.precision());
-    println!("cpu: {} threads (rayon)", rayon::current_num_threads());
+    println!(
+        "cpu: {} threads (rayon)",
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    );
 
     let big = TriMesh::bunny_with_at_least(n).unit();
     let small = {

@@ -1,41 +1,57 @@
-//! Exact collision tests in the 5D conformal model of Euclidean space.
+//! Exact collision detection in the 5D conformal model of Euclidean space.
 //!
-//! * [`shapes`]: the bounded shapes [`Segment`], [`Triangle`], [`Sphere`] (surface) and
-//!   [`Ball`] (solid), built by fallible constructors ([`GeometryError`]).
-//! * [`intersect`]: exact tests `a.intersects(&b)` ([`Intersects`]) between them, built on the
-//!   certified polynomial predicates of [`predicates`] and [`filter`].
-//! * [`conformal`]: the conformal primitives (points, point pairs, lines, circles, planes,
-//!   spheres, flat points) as typed blades of `ga_core::cga`, versors acting on them, and the
-//!   exact meet classification of the thesis's six pairs ([`conformal::meet`]).
-//! * [`euclid`]: Euclidean `f64` reference tests (Möller 1997, Möller–Trumbore, sphere tests).
+//! Every yes/no answer is exact: it is the true answer for the real numbers the `f64` inputs
+//! denote, with no tolerance anywhere (touching counts as intersecting). Signs are certified in
+//! `f64` and recomputed exactly only when the certificate fails.
+//!
+//! # Where things are
+//! | module | what it holds |
+//! |---|---|
+//! | [`exact`] | the bottom layer: certified signs of polynomial predicates, error-bounded `f64`, exact fall-backs |
+//! | [`shape`] | [`Segment`], [`Triangle`], [`Sphere`] (surface), [`Ball`] (solid), convex polyhedra, [`TriMesh`] and its loaders |
+//! | [`conformal`] | conformal primitives (points, point pairs, flat points, lines, circles, planes, spheres), versors, exact meets |
+//! | [`query`] | pairwise tests (`query::intersects_<a>_<b>`), plain-`f64` baselines, the convex test, mesh queries ([`query::Collider`]) |
+//! | [`hierarchy`] | bounding-volume hierarchy, the double outer/inner sphere tree, octree sphere trees |
+//! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
+//! | `testing` | test oracles and adversarial inputs (feature `testing`) |
+//!
+//! Layers depend only on the layers above them in this table. Conventions (basis, blade order,
+//! signs, dual, null vectors, what touching means) are in the repository's
+//! `docs/conventions.md`.
+//!
+//! ```
+//! use cga_collide::nalgebra::Point3;
+//! use cga_collide::{query, Intersects, Segment, Triangle};
+//! let p = |x, y, z| Point3::new(x, y, z);
+//! let t = Triangle::new(p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.))?;
+//! let s = Segment::new(p(0.5, 0.5, -1.), p(0.5, 0.5, 1.))?; // passes through an edge
+//! assert!(query::intersects_segment_triangle(&s, &t));
+//! assert!(t.intersects(&s));
+//! # Ok::<(), cga_collide::GeometryError>(())
+//! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod adversarial;
-pub mod bvh;
 pub mod conformal;
-pub mod convex;
-pub mod double_sphere;
 pub mod error;
-pub mod euclid;
-pub mod experiment;
-pub mod filter;
+pub mod exact;
 #[cfg(feature = "gpu")]
 pub mod gpu;
-pub mod intersect;
-pub mod oracle;
-pub mod plot;
-pub mod polyhedron;
-pub mod predicates;
+pub mod hierarchy;
+mod parallel;
 pub mod query;
-pub mod shapes;
-pub mod sphere_tree;
+pub mod shape;
+#[cfg(feature = "testing")]
+pub mod testing;
 
 pub use error::GeometryError;
-pub use intersect::{Intersects, IntersectsWith};
-pub use shapes::{Ball, Segment, Sphere, Triangle};
+pub use query::{Intersects, IntersectsWith};
+pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
 
 pub use ga_core;
 pub use nalgebra;
 
-pub mod mesh;
+/// The repository README's Rust snippets, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;

@@ -1,9 +1,9 @@
 //! The hierarchy never misses a candidate, and both query modes give identical exact answers,
 //! on random placements including touching and coplanar contacts.
 
-use cga_collide::bvh::BuildStrategy;
-use cga_collide::mesh::TriMesh;
+use cga_collide::hierarchy::bvh::BuildStrategy;
 use cga_collide::query::{Collider, Mode};
+use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
@@ -11,29 +11,7 @@ use proptest::prelude::*;
 /// A closed axis-aligned box mesh with integer corners (12 triangles) — touching and coplanar
 /// contacts happen exactly when such boxes share faces, edges or corners.
 fn cube(lo: [i32; 3], hi: [i32; 3]) -> TriMesh {
-    let p = |x: i32, y: i32, z: i32| Point3::new(x as f64, y as f64, z as f64);
-    let mut v = Vec::new();
-    for &z in &[lo[2], hi[2]] {
-        for &y in &[lo[1], hi[1]] {
-            for &x in &[lo[0], hi[0]] {
-                v.push(p(x, y, z));
-            }
-        }
-    }
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let mut t = Vec::new();
-    for q in quads {
-        t.push([q[0], q[1], q[2]]);
-        t.push([q[0], q[2], q[3]]);
-    }
-    TriMesh::new(v, t).unwrap()
+    TriMesh::cuboid(lo.map(f64::from).into(), hi.map(f64::from).into()).unwrap()
 }
 
 /// A flat grid of `n × n` unit squares in the plane z = `z`, two triangles each.
@@ -56,7 +34,7 @@ fn grid(n: u32, z: f64) -> TriMesh {
 }
 
 fn random_soup(seed: u64, n: usize) -> TriMesh {
-    let mut rng = cga_collide::adversarial::SplitMix64(seed);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(seed);
     let mut v = Vec::new();
     let mut t = Vec::new();
     for k in 0..n {

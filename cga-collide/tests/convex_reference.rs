@@ -2,9 +2,9 @@
 //! mesh test (`Collider::collides_solid`) on random rigid placements of convex solids, and on
 //! touching and nested constructions where the certificates must give way to the exact test.
 
-use cga_collide::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
-use cga_collide::mesh::TriMesh;
+use cga_collide::query::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
 use cga_collide::query::{Collider, Mode};
+use cga_collide::shape::mesh::TriMesh;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 

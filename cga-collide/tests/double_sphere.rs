@@ -1,19 +1,19 @@
-//! The double-sphere tree of the seed paper 000: Table 1's polyhedra, the tree's invariants and
+//! The double-sphere tree of the double-sphere paper: Table 1's polyhedra, the tree's invariants and
 //! the exactness of `collide` against an independent brute force.
 
 use std::sync::OnceLock;
 
-use cga_collide::double_sphere::enclosing::{
+use cga_collide::hierarchy::double_sphere::enclosing::{
     smallest_enclosing_ball, smallest_enclosing_ball_brute,
 };
-use cga_collide::double_sphere::inscribed::{chebyshev_brute, depth};
-use cga_collide::double_sphere::{
+use cga_collide::hierarchy::double_sphere::inscribed::{chebyshev_brute, depth};
+use cga_collide::hierarchy::double_sphere::{
     collide, collide_with, Decision, DoubleSphereTree, InnerSphereKind, Scratch,
 };
-use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::polyhedron::{ConvexPolyhedron, PolyhedronError};
 use cga_collide::query::{Collider, Mode};
+use cga_collide::shape::mesh::TriMesh;
+use cga_collide::shape::polyhedron::{ConvexPolyhedron, PolyhedronError};
 use cga_collide::{Intersects, Triangle};
 use proptest::prelude::*;
 
@@ -214,7 +214,7 @@ fn pose(t: [f64; 3], axis: [f64; 3], angle: f64) -> Isometry3<f64> {
 #[test]
 fn quick_random_agreement() {
     let mut scratch = Scratch::new();
-    let mut rng = cga_collide::adversarial::SplitMix64(42);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(42);
     let mut hits = 0;
     for (na, nb) in PAIRS {
         for level in [0, 3] {
@@ -286,7 +286,7 @@ fn outer_spheres_contain_their_node_and_are_minimal() {
 
 #[test]
 fn smallest_enclosing_ball_matches_brute_force_on_random_points() {
-    let mut rng = cga_collide::adversarial::SplitMix64(5);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(5);
     for n in [1, 2, 3, 4, 5, 8, 13, 20] {
         for _ in 0..20 {
             let pts: Vec<Point3<f64>> = (0..n).map(|_| rng.point()).collect();
@@ -422,7 +422,7 @@ fn leaves_holding(t: &DoubleSphereTree, node: usize, p: &Point3<f64>, out: &mut 
 
 #[test]
 fn leaves_cover_every_piece_of_every_triangle() {
-    let mut rng = cga_collide::adversarial::SplitMix64(77);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(77);
     for (name, level, kind, t) in all_trees() {
         let p = poly(name);
         let mut covered = vec![false; p.triangles().len()];
@@ -462,7 +462,7 @@ fn leaves_cover_every_piece_of_every_triangle() {
     }
 }
 
-fn random_rotation(rng: &mut cga_collide::adversarial::SplitMix64) -> UnitQuaternion<f64> {
+fn random_rotation(rng: &mut cga_collide::testing::adversarial::SplitMix64) -> UnitQuaternion<f64> {
     loop {
         let q = cga_collide::nalgebra::Quaternion::new(
             rng.float(-1.0, 1.0),
@@ -479,7 +479,7 @@ fn random_rotation(rng: &mut cga_collide::adversarial::SplitMix64) -> UnitQuater
 
 #[test]
 fn touching_and_near_touching_agree_with_brute_force() {
-    let mut rng = cga_collide::adversarial::SplitMix64(99);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(99);
     let mut scratch = Scratch::new();
     // Bisect along random directions to the last colliding float and the first free one.
     for (na, nb) in PAIRS {
@@ -532,7 +532,7 @@ fn touching_and_near_touching_agree_with_brute_force() {
 
 #[test]
 fn exact_face_contact_and_identical_poses() {
-    let mut rng = cga_collide::adversarial::SplitMix64(3);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(3);
     let s = poly("cube").vertices()[0].x.abs();
     for level in 0..=4 {
         for kind in KINDS {
@@ -575,7 +575,7 @@ fn containment_without_surface_contact() {
         )
         .unwrap()
     };
-    let mut rng = cga_collide::adversarial::SplitMix64(8);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(8);
     for level in [0, 3] {
         for kind in KINDS {
             let ts = DoubleSphereTree::build(&small, level, kind).unwrap();

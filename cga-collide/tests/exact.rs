@@ -1,14 +1,14 @@
 //! The exact tests against Möller / Euclidean references in general position, and against the
 //! independent exact oracle on adversarial input.
 
-use cga_collide::adversarial::{adversarial_set, triangle_pairs, Case};
-use cga_collide::euclid;
-use cga_collide::filter::{
-    exact_sign, rational_exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Poly,
+use cga_collide::exact::predicates::{Orient3d, SphereSphere};
+use cga_collide::exact::{
+    exact_sign, rational_exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Predicate,
 };
 use cga_collide::nalgebra::Point3;
-use cga_collide::oracle::{self, Shape};
-use cga_collide::predicates::{Orient3d, SphereSphere};
+use cga_collide::query::baseline;
+use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs, Case};
+use cga_collide::testing::oracle::{self, Shape};
 use cga_collide::{Ball, Intersects, IntersectsWith, Segment, Sphere, Triangle};
 use proptest::prelude::*;
 
@@ -128,16 +128,16 @@ proptest! {
     /// General position: the exact tests agree with the Euclidean references.
     #[test]
     fn general_position_agrees_with_references(a in tf(), b in tf(), s in sf(), ball in ballf()) {
-        prop_assert_eq!(a.intersects(&b), euclid::moller_tri_tri(&a, &b), "{:?} {:?}", a, b);
-        prop_assert_eq!(s.intersects(&a), euclid::moller_trumbore_segment_triangle(&s, &a));
-        prop_assert_eq!(s.intersects(&ball), euclid::segment_ball(&s, &ball));
-        prop_assert_eq!(a.intersects(&ball), euclid::triangle_ball(&a, &ball));
+        prop_assert_eq!(a.intersects(&b), baseline::moller_tri_tri(&a, &b), "{:?} {:?}", a, b);
+        prop_assert_eq!(s.intersects(&a), baseline::moller_trumbore_segment_triangle(&s, &a));
+        prop_assert_eq!(s.intersects(&ball), baseline::segment_ball(&s, &ball));
+        prop_assert_eq!(a.intersects(&ball), baseline::triangle_ball(&a, &ball));
         let sphere = Sphere::from(ball);
-        prop_assert_eq!(s.intersects(&sphere), euclid::segment_sphere(&s, &sphere));
-        prop_assert_eq!(a.intersects(&sphere), euclid::triangle_sphere(&a, &sphere));
+        prop_assert_eq!(s.intersects(&sphere), baseline::segment_sphere(&s, &sphere));
+        prop_assert_eq!(a.intersects(&sphere), baseline::triangle_sphere(&a, &sphere));
         let other = Ball::new(b.vertices()[0], 0.7).unwrap();
-        prop_assert_eq!(ball.intersects(&other), euclid::ball_ball(&ball, &other));
-        prop_assert_eq!(sphere.intersects(&Sphere::from(other)), euclid::sphere_sphere(&sphere, &Sphere::from(other)));
+        prop_assert_eq!(ball.intersects(&other), baseline::ball_ball(&ball, &other));
+        prop_assert_eq!(sphere.intersects(&Sphere::from(other)), baseline::sphere_sphere(&sphere, &Sphere::from(other)));
         // The plain-f64 variant of the same algorithm agrees too in general position.
         prop_assert_eq!(a.intersects_with::<FloatKernel>(&b), a.intersects(&b));
     }

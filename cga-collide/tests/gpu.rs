@@ -6,11 +6,11 @@
 //! message otherwise.
 #![cfg(feature = "gpu")]
 
-use cga_collide::adversarial::{adversarial_set, Case};
 use cga_collide::gpu::{shader_source, Device, GpuError, Precision, Query};
 use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::query::{Collider, Mode};
+use cga_collide::testing::adversarial::{adversarial_set, Case};
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use ga_core::cga::{self, wgsl};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -221,7 +221,7 @@ fn generated_functions_agree_with_the_rust_products() {
         Geometric, LeftContraction, Regressive, RightContraction, ScalarProduct, Wedge,
     };
     let samples = 64u32;
-    let mut rng = cga_collide::adversarial::SplitMix64(12);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(12);
     for device in devices() {
         let (source, tolerance) = match device.precision() {
             Precision::F64 => (wgsl::F64, 1e-12),

@@ -1,6 +1,6 @@
 //! Loader tests: every format, its errors, agreement between formats, and malformed input.
 
-use cga_collide::mesh::{MeshError, MeshFormat, TriMesh};
+use cga_collide::shape::mesh::{MeshError, MeshFormat, TriMesh};
 use nalgebra::Point3;
 use proptest::prelude::*;
 

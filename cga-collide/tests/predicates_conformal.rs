@@ -1,8 +1,8 @@
 //! The predicates are the conformal quantities of the thesis: checks against the generated
 //! algebra `ga_core::cga` in exact arithmetic.
 
-use cga_collide::filter::Poly;
-use cga_collide::predicates::{BallBall, Orient3d, Orient3dCga, PointPower, SphereSphere};
+use cga_collide::exact::predicates::{BallBall, Orient3d, Orient3dCga, PointPower, SphereSphere};
+use cga_collide::exact::Predicate;
 use ga_core::cga::{n_inf, up_generic, Vector};
 use ga_core::prelude::*;
 use ga_core::scalar::Rational;

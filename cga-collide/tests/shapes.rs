@@ -1,7 +1,7 @@
 //! Constructors: bad input is rejected with a typed error naming the argument.
 
 use cga_collide::nalgebra::Point3;
-use cga_collide::{euclid, Ball, GeometryError, Segment, Sphere, Triangle};
+use cga_collide::{query::baseline, Ball, GeometryError, Segment, Sphere, Triangle};
 
 #[test]
 fn rejects_non_finite_coordinates_naming_the_argument() {
@@ -73,25 +73,25 @@ fn references_on_simple_cases() {
     let cross = Triangle::new(p(0.2, 0.2, -1.), p(0.2, 0.2, 1.), p(3., 3., 0.)).unwrap();
     let cop = Triangle::new(p(0.1, 0.1, 0.), p(3., 0.1, 0.), p(0.1, 3., 0.)).unwrap();
     let cop_far = Triangle::new(p(2., 2., 0.), p(3., 2., 0.), p(2., 3., 0.)).unwrap();
-    assert!(!euclid::moller_tri_tri(&t1, &far));
-    assert!(euclid::moller_tri_tri(&t1, &cross));
-    assert!(euclid::moller_tri_tri(&t1, &cop));
-    assert!(!euclid::moller_tri_tri(&t1, &cop_far));
+    assert!(!baseline::moller_tri_tri(&t1, &far));
+    assert!(baseline::moller_tri_tri(&t1, &cross));
+    assert!(baseline::moller_tri_tri(&t1, &cop));
+    assert!(!baseline::moller_tri_tri(&t1, &cop_far));
     let s = Segment::new(p(0.25, 0.25, 1.), p(0.25, 0.25, -1.)).unwrap();
-    assert!(euclid::moller_trumbore_segment_triangle(&s, &t1));
-    assert!(!euclid::moller_trumbore_segment_triangle(&s, &far));
+    assert!(baseline::moller_trumbore_segment_triangle(&s, &t1));
+    assert!(!baseline::moller_trumbore_segment_triangle(&s, &far));
     let b = Ball::new(p(0.25, 0.25, 0.5), 0.5).unwrap();
-    assert!(euclid::triangle_ball(&t1, &b));
-    assert!(!euclid::triangle_sphere(
+    assert!(baseline::triangle_ball(&t1, &b));
+    assert!(!baseline::triangle_sphere(
         &t1,
         &Sphere::new(p(0.2, 0.2, 0.), 10.0).unwrap()
     ));
-    assert!(euclid::segment_sphere(&s, &Sphere::from(b)));
-    assert!(euclid::sphere_sphere(
+    assert!(baseline::segment_sphere(&s, &Sphere::from(b)));
+    assert!(baseline::sphere_sphere(
         &Sphere::new(p(0., 0., 0.), 1.).unwrap(),
         &Sphere::new(p(2., 0., 0.), 1.).unwrap()
     ));
-    assert!(!euclid::ball_ball(
+    assert!(!baseline::ball_ball(
         &Ball::new(p(0., 0., 0.), 1.).unwrap(),
         &Ball::new(p(2.5, 0., 0.), 1.).unwrap()
     ));

@@ -1,33 +1,12 @@
 //! Exact point-in-closed-mesh and solid collision.
 
-use cga_collide::mesh::TriMesh;
 use cga_collide::query::{Collider, Mode};
+use cga_collide::shape::mesh::TriMesh;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
 use proptest::prelude::*;
 
 fn cube(lo: [f64; 3], hi: [f64; 3]) -> TriMesh {
-    let mut v = Vec::new();
-    for &z in &[lo[2], hi[2]] {
-        for &y in &[lo[1], hi[1]] {
-            for &x in &[lo[0], hi[0]] {
-                v.push(Point3::new(x, y, z));
-            }
-        }
-    }
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let mut t = Vec::new();
-    for q in quads {
-        t.push([q[0], q[1], q[2]]);
-        t.push([q[0], q[2], q[3]]);
-    }
-    TriMesh::new(v, t).unwrap()
+    TriMesh::cuboid(lo.into(), hi.into()).unwrap()
 }
 
 /// Float generalized winding number (solid angles), for points far from the surface.
@@ -59,7 +38,7 @@ fn armadillo_inside_matches_winding_number_away_from_surface() {
     assert!(arm.is_closed());
     let c = Collider::new(arm.clone());
     let (lo, hi) = arm.bounds();
-    let mut rng = cga_collide::adversarial::SplitMix64(7);
+    let mut rng = cga_collide::testing::adversarial::SplitMix64(7);
     let mut inside = 0;
     for _ in 0..40 {
         let p = Point3::new(

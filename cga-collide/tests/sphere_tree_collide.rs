@@ -1,17 +1,19 @@
-//! Collision of sphere trees: the seed's method, the simultaneous descent and every leaf pair
+//! Collision of sphere trees: the paper's method, the simultaneous descent and every leaf pair
 //! agree on nested trees (random sphere sets and octree trees of meshes in random placements);
-//! octree trees have no false negatives against the exact solids; the seed's C++ as written
+//! octree trees have no false negatives against the exact solids; the paper's C++ as written
 //! misses a collision.
 #![allow(clippy::needless_range_loop)]
 
 use std::sync::OnceLock;
 
-use cga_collide::mesh::TriMesh;
+use cga_collide::hierarchy::sphere_tree::octree::{
+    ball_contains_box, build, cell_of, BuildOptions,
+};
+use cga_collide::hierarchy::sphere_tree::tribox::triangle_meets_box;
+use cga_collide::hierarchy::sphere_tree::{collide, CellState, NestedNode, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::query::{Collider, Mode};
-use cga_collide::sphere_tree::octree::{ball_contains_box, build, cell_of, BuildOptions};
-use cga_collide::sphere_tree::tribox::triangle_meets_box;
-use cga_collide::sphere_tree::{collide, CellState, NestedNode, SphereTree};
+use cga_collide::shape::mesh::TriMesh;
 use proptest::prelude::*;
 
 fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
@@ -30,7 +32,7 @@ fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
 
 fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
     let reference = collide::brute_force(x, y).collides;
-    let s = collide::seed(x, y);
+    let s = collide::paper_method(x, y);
     let m = collide::simultaneous(x, y);
     prop_assert_eq!(s.collides, reference);
     prop_assert_eq!(m.collides, reference);
@@ -39,13 +41,13 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
         if let Some((i, j)) = r.witness {
             let (a, b) = (x.node(i), y.node(j));
             prop_assert!(a.is_leaf() && b.is_leaf());
-            prop_assert!(cga_collide::sphere_tree::balls_meet(
+            prop_assert!(cga_collide::exact::balls_meet(
                 &a.centre, a.radius, &b.centre, b.radius
             ));
         }
     }
-    // The seed as written never claims a collision that is not there.
-    prop_assert!(!collide::seed_as_written(x, y).collides || reference);
+    // The paper's method as published never claims a collision that is not there.
+    prop_assert!(!collide::paper_method_as_published(x, y).collides || reference);
     Ok(reference)
 }
 
@@ -63,7 +65,7 @@ proptest! {
 }
 
 #[test]
-fn seed_as_written_misses_a_collision() {
+fn paper_method_as_published_misses_a_collision() {
     // Y: a root with two children; the first child's ball meets X's leaf but its own leaf does
     // not; the second child's leaf does. The C++ follows only the first meeting child.
     let leaf = |x: f64, r: f64| NestedNode::leaf([x, 0.0, 0.0], r, CellState::Partial);
@@ -90,35 +92,14 @@ fn seed_as_written_misses_a_collision() {
     assert!(y.nesting_violations().is_empty());
     let x = SphereTree::single([1.5, 0.0, 0.0], 1.0, CellState::Full).unwrap();
     assert!(collide::brute_force(&x, &y).collides);
-    assert!(collide::seed(&x, &y).collides);
+    assert!(collide::paper_method(&x, &y).collides);
     assert!(collide::simultaneous(&x, &y).collides);
-    assert!(!collide::seed_as_written(&x, &y).collides);
+    assert!(!collide::paper_method_as_published(&x, &y).collides);
 }
 
 /// A closed, outward-oriented cube mesh.
 fn cube(lo: [f64; 3], hi: [f64; 3]) -> TriMesh {
-    let v = (0..8)
-        .map(|m| {
-            cga_collide::nalgebra::Point3::new(
-                if m & 1 == 0 { lo[0] } else { hi[0] },
-                if m & 2 == 0 { lo[1] } else { hi[1] },
-                if m & 4 == 0 { lo[2] } else { hi[2] },
-            )
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let t = quads
-        .iter()
-        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-        .collect();
-    TriMesh::new(v, t).unwrap()
+    TriMesh::cuboid(lo.into(), hi.into()).unwrap()
 }
 
 /// Every node's state re-derived by brute force over all triangles (no hierarchy), every
@@ -128,8 +109,9 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
     let tris: Vec<[[f64; 3]; 3]> = (0..mesh.num_triangles())
         .map(|i| mesh.triangle(i).map(|p| [p.x, p.y, p.z]))
         .collect();
-    let partial =
-        |b: &cga_collide::bvh::Aabb| tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max));
+    let partial = |b: &cga_collide::hierarchy::bvh::Aabb| {
+        tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max))
+    };
     let mut level = vec![0u32; tree.len()];
     for i in 0..tree.len() {
         for ch in tree.children(i) {
@@ -275,7 +257,7 @@ proptest! {
         wiggle in -4i64..=4,
         scale in prop::sample::select(vec![1e-300, 1e-160, 1e-10, 1.0, 1e10, 1e150, 1e300]),
     ) {
-        use cga_collide::sphere_tree::{balls_meet, balls_meet_exact};
+        use cga_collide::exact::{balls_meet, balls_meet_exact};
         let n = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt().max(1e-3);
         // Centre 2 at distance r1 + r2 (tangent up to rounding), nudged by a few ulps.
         let d = (r1 + r2) * (1.0 + wiggle as f64 * f64::EPSILON);
@@ -294,7 +276,7 @@ proptest! {
 
 #[test]
 fn ball_filter_exact_cases() {
-    use cga_collide::sphere_tree::{balls_meet, balls_meet_exact};
+    use cga_collide::exact::{balls_meet, balls_meet_exact};
     // Integer tangency (3-4-5), just apart, just overlapping, coincident points.
     let cases = [
         ([0.0, 0.0, 0.0], 2.0, [3.0, 4.0, 0.0], 3.0, true),

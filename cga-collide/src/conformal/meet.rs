@@ -2,7 +2,7 @@
 //! line–sphere, plane–plane, sphere–plane, sphere–sphere.
 //!
 //! Each function computes the meet in the inner (IPNS) forms, `M = dual(A) ∧ dual(B)`, which
-//! is the dual of the regressive product `A ∨ B` of the outer forms (DESIGN.md), and
+//! is the dual of the regressive product `A ∨ B` of the outer forms (`docs/conventions.md`), and
 //! classifies from the sign of its square `M² = ⟨M M⟩₀` (the thesis's `B²`) and from whether
 //! `M` vanishes:
 //!
@@ -21,7 +21,7 @@
 //! (`Q` a point of `L₂` off `L₁`): the flat point `F = (L₁ ⌋ J) ⌋ L₂`, with `F² > 0` for
 //! intersecting, `F² = 0` for parallel and `F = 0` for coincident lines.
 //!
-//! **Certified**: every sign and every "is zero" is evaluated on [`crate::filter::ErrF64`]
+//! **Certified**: every sign and every "is zero" is evaluated on [`crate::exact::ErrF64`]
 //! (`f64` with a rigorous error bound) and, when that cannot decide, exactly on rationals
 //! rebuilt from the primitives' `f64` data by the same generic code. The classification is
 //! therefore exact for the primitives the `f64` inputs denote (see the
@@ -52,10 +52,10 @@ use ga_core::scalar::Rational;
 use nalgebra::{Point3, Vector3};
 
 use super::{
-    all_zero, coeffs, decide, flat_point_location, n_inf, round_centre, Circle, Exactish, Line,
-    Plane, PointPair, Sphere,
+    all_zero, coeffs, decide, flat_point_location, n_inf, round_centre, CertifiedScalar, Circle,
+    Line, Plane, PointPair, Sphere,
 };
-use crate::filter::ErrF64;
+use crate::exact::ErrF64;
 
 const NAN3: Point3<f64> = Point3::new(f64::NAN, f64::NAN, f64::NAN);
 
@@ -179,8 +179,8 @@ pub enum SphereSphere {
 // ---------------------------------------------------------------------------------------------
 // Generic classification kernels: `None` when a sign is not certain.
 
-fn sq_sign<T: Exactish, X: Clone + ScalarProduct<X, Output = T>>(x: &X) -> Option<Ordering> {
-    x.scalar_product(x).sign_of()
+fn sq_sign<T: CertifiedScalar, X: Clone + ScalarProduct<X, Output = T>>(x: &X) -> Option<Ordering> {
+    x.scalar_product(x).certain_sign()
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -191,7 +191,11 @@ enum LL {
     Skew,
 }
 
-fn ll_kind<T: Exactish>(l1: &Trivector<T>, l2: &Trivector<T>, q: [Vector<T>; 2]) -> Option<LL> {
+fn ll_kind<T: CertifiedScalar>(
+    l1: &Trivector<T>,
+    l2: &Trivector<T>,
+    q: [Vector<T>; 2],
+) -> Option<LL> {
     let m: Vector<T> = l1.regressive(l2);
     if !all_zero(&coeffs(m))? {
         return Some(LL::Skew);
@@ -221,7 +225,7 @@ enum LP {
     Contained,
 }
 
-fn lp_kind<T: Exactish>(l: &Trivector<T>, p: &Vector<T>) -> Option<LP> {
+fn lp_kind<T: CertifiedScalar>(l: &Trivector<T>, p: &Vector<T>) -> Option<LP> {
     let x: Trivector<T> = l.dual().wedge(p);
     if all_zero(&coeffs(x.clone()))? {
         return Some(LP::Contained);
@@ -233,11 +237,11 @@ fn lp_kind<T: Exactish>(l: &Trivector<T>, p: &Vector<T>) -> Option<LP> {
 }
 
 /// Three-way kinds for the round cases: `M² < 0`, `= 0`, `> 0`.
-fn round_kind<T: Exactish>(m2: T) -> Option<Ordering> {
-    m2.sign_of()
+fn round_kind<T: CertifiedScalar>(m2: T) -> Option<Ordering> {
+    m2.certain_sign()
 }
 
-fn ls_kind<T: Exactish>(l: &Trivector<T>, s: &Vector<T>) -> Option<Ordering> {
+fn ls_kind<T: CertifiedScalar>(l: &Trivector<T>, s: &Vector<T>) -> Option<Ordering> {
     let x: Trivector<T> = l.dual().wedge(s);
     round_kind(x.scalar_product(&x))
 }
@@ -249,7 +253,7 @@ enum PP {
     Coincident,
 }
 
-fn pp_kind<T: Exactish>(a: &Vector<T>, b: &Vector<T>) -> Option<PP> {
+fn pp_kind<T: CertifiedScalar>(a: &Vector<T>, b: &Vector<T>) -> Option<PP> {
     let m: Bivector<T> = a.wedge(b);
     if all_zero(&coeffs(m.clone()))? {
         return Some(PP::Coincident);
@@ -260,7 +264,7 @@ fn pp_kind<T: Exactish>(a: &Vector<T>, b: &Vector<T>) -> Option<PP> {
     })
 }
 
-fn sp_kind<T: Exactish>(s: &Vector<T>, p: &Vector<T>) -> Option<Ordering> {
+fn sp_kind<T: CertifiedScalar>(s: &Vector<T>, p: &Vector<T>) -> Option<Ordering> {
     let m: Bivector<T> = s.wedge(p);
     round_kind(m.scalar_product(&m))
 }
@@ -275,7 +279,7 @@ enum SS {
     Nested,
 }
 
-fn ss_kind<T: Exactish>(a: &Vector<T>, b: &Vector<T>) -> Option<SS> {
+fn ss_kind<T: CertifiedScalar>(a: &Vector<T>, b: &Vector<T>) -> Option<SS> {
     if sq_sign(a)? == Ordering::Less || sq_sign(b)? == Ordering::Less {
         return Some(SS::Disjoint);
     }
@@ -286,7 +290,7 @@ fn ss_kind<T: Exactish>(a: &Vector<T>, b: &Vector<T>) -> Option<SS> {
     let inside = || -> Option<bool> {
         let n = n_inf::<T>();
         let k = a.scalar_product(b) * a.scalar_product(&n) * b.scalar_product(&n);
-        Some(k.sign_of()? == Ordering::Greater)
+        Some(k.certain_sign()? == Ordering::Greater)
     };
     Some(match sq_sign(&m)? {
         Ordering::Less => SS::Circle,

@@ -6,7 +6,7 @@
 //! The compute shader ([`shader_source`]) is the generated WGSL of the conformal algebra
 //! (`ga_core::cga::wgsl::RING`: points `2·up(x)`, dual spheres, the inner product, planes as
 //! `up(a) ∧ up(b) ∧ up(c) ∧ n_inf` and their wedge with a point) evaluated on a scalar that
-//! carries a running error bound, plus the decision logic of [`crate::intersect`]. Every sign
+//! carries a running error bound, plus the decision logic of the exact tests in [`crate::query`]. Every sign
 //! is certified on the device or reported as uncertain; a pair whose answer depends on an
 //! uncertain sign is *flagged* and re-decided on the CPU by the exact test
 //! ([`Intersects`](crate::Intersects)). So every answer equals the CPU's exact answer; the
@@ -42,7 +42,6 @@
 use std::borrow::Cow;
 use std::sync::mpsc;
 
-use rayon::prelude::*;
 use wgpu::util::DeviceExt as _;
 
 use crate::mesh::TriMesh;
@@ -606,7 +605,7 @@ impl Device {
         }
         let flagged = undecided.len() as u64;
         let decided: Vec<(u32, u32)> = undecided
-            .into_par_iter()
+            .into_iter()
             .filter(|&(i, j)| exact(i, j))
             .collect();
         let mut hits = device_hits;

@@ -1,0 +1,276 @@
+//! `cga spheretree`: octree sphere trees (Fuentes Socorro's method) in the paper's text format.
+//!
+//! * `cga spheretree build MESH [MESH...] --depth D -o FILE`: one tree per mesh, written in
+//!   the paper's format; `--rotate/--translate` move every mesh after the first (as `cga
+//!   collide` moves B), so `cga spheretree build bunny armadillo --unit --translate 0.3,0.05,0
+//!   --depth 5 -o pair.txt` makes a file `collide` can read.
+//! * `cga spheretree collide FILE`: whether the first two trees of the file collide, by the
+//!   paper's method, the simultaneous descent, or both (they must agree).
+
+use std::fs;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+use cga_collide::hierarchy::sphere_tree::collide::{self, CollisionResult};
+use cga_collide::hierarchy::sphere_tree::format;
+use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
+use cga_collide::hierarchy::sphere_tree::SphereTree;
+use cga_collide::query::Collider;
+use clap::{Args, Subcommand, ValueEnum};
+use serde_json::json;
+
+/// Octree sphere trees: build them from meshes, test two for collision.
+#[derive(Args, Debug)]
+pub struct SphereTreeArgs {
+    #[command(subcommand)]
+    command: SphereTreeCommand,
+}
+
+#[derive(Subcommand, Debug)]
+enum SphereTreeCommand {
+    /// Build one octree sphere tree per mesh and write them in the paper's text format.
+    Build(BuildArgs),
+    /// Whether the first two trees of a file (the paper's format) collide.
+    Collide(CollideArgs),
+}
+
+#[derive(Args, Debug)]
+struct BuildArgs {
+    /// Meshes: files (.obj, .off, .ply, .stl, optionally .gz) or built-in names (bunny,
+    /// bunny00, armadillo). Each must be closed.
+    #[arg(required = true)]
+    meshes: Vec<String>,
+    /// Octree depth (0: the root cell only).
+    #[arg(long, default_value_t = 5)]
+    depth: u32,
+    /// Output file.
+    #[arg(short, long, value_name = "FILE")]
+    output: PathBuf,
+    /// Scale each mesh into the unit box centred at the origin first.
+    #[arg(long)]
+    unit: bool,
+    /// Rotate every mesh after the first by these degrees about x, then y, then z.
+    #[arg(long, value_name = "AX,AY,AZ", value_parser = super::parse_triple, allow_hyphen_values = true)]
+    rotate: Option<[f64; 3]>,
+    /// Then translate every mesh after the first.
+    #[arg(long, value_name = "X,Y,Z", value_parser = super::parse_triple, allow_hyphen_values = true)]
+    translate: Option<[f64; 3]>,
+    /// Split full cells too (all leaves at the full depth).
+    #[arg(long)]
+    subdivide_full: bool,
+    /// Print a JSON summary.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+enum Method {
+    /// The paper's method (roots, leaves of X against Y's root, then each against Y), with its
+    /// `Colision_Real` fixed to try every meeting child.
+    Paper,
+    /// the paper's C++ exactly as written (follows only the first meeting child: can miss).
+    PaperAsPublished,
+    /// Simultaneous descent, larger ball first.
+    Simultaneous,
+    /// `paper` and `simultaneous`, checking that they agree.
+    Both,
+}
+
+#[derive(Args, Debug)]
+struct CollideArgs {
+    /// A file in the paper's format with at least two trees.
+    file: PathBuf,
+    /// Which traversal.
+    #[arg(long, value_enum, default_value_t = Method::Both)]
+    method: Method,
+    /// Accept a file that ends early (report what is missing on stderr, use what is there).
+    #[arg(long)]
+    lenient: bool,
+    /// Print the result as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Runs `cga spheretree`.
+pub fn run(args: SphereTreeArgs) -> Result<()> {
+    match args.command {
+        SphereTreeCommand::Build(a) => build_cmd(a),
+        SphereTreeCommand::Collide(a) => collide_cmd(a),
+    }
+}
+
+fn build_cmd(args: BuildArgs) -> Result<()> {
+    let options = BuildOptions {
+        subdivide_full: args.subdivide_full,
+        ..BuildOptions::depth(args.depth)
+    };
+    let iso = super::placement(args.rotate, args.translate);
+    let mut trees = Vec::new();
+    let mut summary = Vec::new();
+    for (k, spec) in args.meshes.iter().enumerate() {
+        let mut mesh = super::load_mesh(spec)?;
+        if args.unit {
+            mesh = mesh.unit();
+        }
+        if k > 0 {
+            mesh = mesh
+                .transformed(&iso)
+                .with_context(|| format!("placing mesh `{spec}`"))?;
+        }
+        let start = Instant::now();
+        let collider = Collider::new(mesh);
+        let (tree, report) = build(&collider, &options)
+            .with_context(|| format!("building the sphere tree of `{spec}`"))?;
+        let millis = start.elapsed().as_secs_f64() * 1e3;
+        summary.push(json!({
+            "mesh": spec,
+            "triangles": collider.mesh().num_triangles(),
+            "nodes": tree.len(),
+            "leaves": tree.leaf_count(),
+            "bytes": tree.heap_bytes(),
+            "root": {"centre": tree.root().centre, "radius": tree.root().radius},
+            "cube_side": report.side,
+            "partial": report.levels.iter().map(|l| l.partial).collect::<Vec<_>>(),
+            "full": report.levels.iter().map(|l| l.full).collect::<Vec<_>>(),
+            "millis": millis,
+        }));
+        trees.push(tree);
+    }
+    fs::write(&args.output, format::write(&trees))
+        .with_context(|| format!("cannot write `{}`", args.output.display()))?;
+    if args.json {
+        println!(
+            "{}",
+            json!({"file": args.output.display().to_string(), "depth": args.depth, "trees": summary})
+        );
+    } else {
+        for s in &summary {
+            println!(
+                "{}: {} triangles -> {} spheres ({} leaves), depth {}, {:.1} ms",
+                s["mesh"].as_str().unwrap_or("?"),
+                s["triangles"],
+                s["nodes"],
+                s["leaves"],
+                args.depth,
+                s["millis"].as_f64().unwrap_or(0.0)
+            );
+        }
+        println!("wrote {} trees to {}", trees.len(), args.output.display());
+    }
+    Ok(())
+}
+
+fn result_json(r: &CollisionResult) -> serde_json::Value {
+    json!({
+        "collides": r.collides,
+        "sphere_tests": r.sphere_tests,
+        "witness": r.witness.map(|(i, j)| [i, j]),
+        "listed_leaves": r.listed_leaves,
+    })
+}
+
+fn collide_cmd(args: CollideArgs) -> Result<()> {
+    let text = fs::read_to_string(&args.file)
+        .with_context(|| format!("cannot read `{}`", args.file.display()))?;
+    let name = args.file.display().to_string();
+    let trees: Vec<SphereTree> = if args.lenient {
+        let r = format::read_lenient(&text).with_context(|| format!("in `{name}`"))?;
+        if !r.is_complete() {
+            eprintln!(
+                "warning: `{name}` is incomplete: {} trees declared, {} complete",
+                r.declared_trees, r.complete_trees
+            );
+            for g in &r.gaps {
+                eprintln!("warning: {g}");
+            }
+        }
+        r.trees
+    } else {
+        format::read(&text).with_context(|| format!("in `{name}`"))?
+    };
+    if trees.len() < 2 {
+        bail!("`{name}` holds {} tree(s); collide needs two", trees.len());
+    }
+    let (x, y) = (&trees[0], &trees[1]);
+    let nodes = [x.len(), y.len()];
+    let timed = |f: fn(&SphereTree, &SphereTree) -> CollisionResult| {
+        let t = Instant::now();
+        let r = f(x, y);
+        (r, t.elapsed().as_secs_f64() * 1e6)
+    };
+    let method_name = match args.method {
+        Method::Paper => "paper",
+        Method::PaperAsPublished => "paper-as-published",
+        Method::Simultaneous => "simultaneous",
+        Method::Both => "both",
+    };
+    let single = match args.method {
+        Method::Paper => Some(timed(collide::paper_method)),
+        Method::PaperAsPublished => Some(timed(collide::paper_method_as_published)),
+        Method::Simultaneous => Some(timed(collide::simultaneous)),
+        Method::Both => None,
+    };
+    if let Some((r, micros)) = single {
+        if args.json {
+            let mut v = result_json(&r);
+            v["method"] = json!(method_name);
+            v["nodes"] = json!(nodes);
+            v["micros"] = json!(micros);
+            println!("{v}");
+        } else {
+            println!(
+                "{} ({method_name}: {} sphere tests, {micros:.1} µs)",
+                if r.collides {
+                    "collide"
+                } else {
+                    "no collision"
+                },
+                r.sphere_tests
+            );
+        }
+        return Ok(());
+    }
+    let (s, s_us) = timed(collide::paper_method);
+    let (m, m_us) = timed(collide::simultaneous);
+    if s.collides != m.collides {
+        // Possible only for trees whose child balls are not inside their parents.
+        eprintln!(
+            "warning: the methods disagree (paper: {}, simultaneous: {}); {} + {} child balls stick out of their parents",
+            s.collides,
+            m.collides,
+            x.nesting_violations().len(),
+            y.nesting_violations().len()
+        );
+    }
+    if args.json {
+        let mut sj = result_json(&s);
+        sj["micros"] = json!(s_us);
+        let mut mj = result_json(&m);
+        mj["micros"] = json!(m_us);
+        println!(
+            "{}",
+            json!({
+                "collides": m.collides,
+                "agree": s.collides == m.collides,
+                "method": "both",
+                "sphere_tests": s.sphere_tests + m.sphere_tests,
+                "nodes": nodes,
+                "paper": sj,
+                "simultaneous": mj,
+            })
+        );
+    } else {
+        println!(
+            "{} (paper: {} sphere tests, {s_us:.1} µs; simultaneous: {} sphere tests, {m_us:.1} µs)",
+            if s.collides {
+                "collide"
+            } else {
+                "no collision"
+            },
+            s.sphere_tests,
+            m.sphere_tests
+        );
+    }
+    Ok(())
+}

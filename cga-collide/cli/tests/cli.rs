@@ -1,0 +1,366 @@
+//! The `cga` command line: JSON fields, pairs file, image, modes agreeing, typed errors.
+
+use std::process::Command;
+
+fn cga(args: &[&str], dir: &std::path::Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_cga"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the cga binary runs")
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("cga-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON on stdout")
+}
+
+#[test]
+fn collide_modes_agree_and_write_pairs_and_image() {
+    let dir = temp_dir("collide");
+    let common = [
+        "collide",
+        "bunny",
+        "bunny",
+        "--unit",
+        "--rotate",
+        "0,40,10",
+        "--translate",
+        "0.2,0.05,-0.1",
+        "--json",
+        "--repeat",
+        "1",
+    ];
+    let mut brute_args = common.to_vec();
+    brute_args.extend(["--mode", "brute", "--pairs", "brute.txt"]);
+    let mut bvh_args = common.to_vec();
+    bvh_args.extend(["--mode", "bvh", "--pairs", "bvh.txt", "--image", "out.png"]);
+    let brute = json(&cga(&brute_args, &dir));
+    let bvh = json(&cga(&bvh_args, &dir));
+    assert_eq!(brute["mode"], "brute");
+    assert_eq!(bvh["mode"], "bvh");
+    assert_eq!(brute["pairs"], bvh["pairs"]);
+    assert_eq!(bvh["triangles"], serde_json::json!([3674, 3674]));
+    assert!(bvh["collides"].as_bool().unwrap());
+    assert!(bvh["pairs"].as_u64().unwrap() > 0);
+    assert!(bvh["millis"].as_f64().unwrap() >= 0.0);
+    assert!(bvh["build_millis"].as_f64().unwrap() >= 0.0);
+    let a = std::fs::read_to_string(dir.join("brute.txt")).unwrap();
+    let b = std::fs::read_to_string(dir.join("bvh.txt")).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(a.lines().count() as u64, bvh["pairs"].as_u64().unwrap());
+    for line in a.lines() {
+        let ij: Vec<u32> = line.split(' ').map(|x| x.parse().unwrap()).collect();
+        assert!(ij.len() == 2 && ij[0] < 3674 && ij[1] < 3674);
+    }
+    let png = std::fs::read(dir.join("out.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+}
+
+#[test]
+fn far_apart_meshes_do_not_collide() {
+    let dir = temp_dir("apart");
+    let out = json(&cga(
+        &[
+            "collide",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "5,0,0",
+            "--json",
+            "--repeat",
+            "1",
+        ],
+        &dir,
+    ));
+    assert_eq!(out["collides"], false);
+    assert_eq!(out["pairs"], 0);
+}
+
+#[test]
+fn query_reports_hits() {
+    let dir = temp_dir("query");
+    let out = json(&cga(
+        &[
+            "query",
+            "bunny",
+            "--unit",
+            "--segment",
+            "0,0,-2,0,0,2",
+            "--json",
+        ],
+        &dir,
+    ));
+    assert_eq!(out["query"], "segment");
+    // A segment through the middle of a closed mesh crosses its surface an even, nonzero number
+    // of times (or touches an edge/vertex, which counts every triangle there).
+    assert!(out["hits"].as_u64().unwrap() >= 2);
+}
+
+#[test]
+fn bad_input_gives_an_error_not_a_panic() {
+    let dir = temp_dir("bad");
+    std::fs::write(
+        dir.join("broken.off"),
+        "OFF\n3 1 0\n0 0 0\n1 nope 0\n0 1 0\n3 0 1 2\n",
+    )
+    .unwrap();
+    let out = cga(&["collide", "broken.off", "bunny"], &dir);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("broken.off"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    let out = cga(&["collide", "missing.obj", "bunny"], &dir);
+    assert!(!out.status.success());
+    let out = cga(&["query", "bunny", "--sphere", "0,0,0,-1"], &dir);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("radius"));
+    let out = cga(&["collide", "bunny", "bunny", "--translate", "1,2"], &dir);
+    assert!(!out.status.success());
+}
+
+fn cube_off(lo: f64, hi: f64) -> String {
+    let mut s = String::from("OFF\n8 12 0\n");
+    for i in 0..8 {
+        let c = |bit: usize| if i >> bit & 1 == 1 { hi } else { lo };
+        s += &format!("{} {} {}\n", c(0), c(1), c(2));
+    }
+    for f in [
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ] {
+        s += &format!("3 {} {} {}\n", f[0], f[1], f[2]);
+    }
+    s
+}
+
+#[test]
+fn a_mesh_wholly_inside_another_is_reported() {
+    let dir = temp_dir("nested");
+    std::fs::write(dir.join("big.off"), cube_off(-2.0, 2.0)).unwrap();
+    std::fs::write(dir.join("small.off"), cube_off(-0.5, 0.5)).unwrap();
+    let out = json(&cga(
+        &["collide", "big.off", "small.off", "--json", "--repeat", "1"],
+        &dir,
+    ));
+    assert_eq!(out["collides"], false);
+    assert_eq!(out["pairs"], 0);
+    assert_eq!(out["b_inside_a"], true);
+    assert_eq!(out["a_inside_b"], false);
+    assert_eq!(out["solids_collide"], true);
+    let apart = json(&cga(
+        &[
+            "collide",
+            "big.off",
+            "small.off",
+            "--translate",
+            "9,0,0",
+            "--json",
+            "--repeat",
+            "1",
+        ],
+        &dir,
+    ));
+    assert_eq!(apart["solids_collide"], false);
+}
+
+fn spheretree_fixture(name: &str) -> String {
+    format!(
+        "{}/../tests/fixtures/spheretree/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+#[test]
+fn spheretree_collide_gives_the_seeds_answers() {
+    let dir = temp_dir("spheretree-seed");
+    for (file, expected) in [
+        ("paper_no_collision.txt", false),
+        ("paper_collision.txt", true),
+    ] {
+        let path = spheretree_fixture(file);
+        let both = json(&cga(&["spheretree", "collide", &path, "--json"], &dir));
+        assert_eq!(both["method"], "both");
+        assert_eq!(both["collides"], expected);
+        assert_eq!(both["agree"], true);
+        assert_eq!(both["nodes"], serde_json::json!([41, 41]));
+        for method in ["paper", "simultaneous", "paper-as-published"] {
+            let one = json(&cga(
+                &["spheretree", "collide", &path, "--json", "--method", method],
+                &dir,
+            ));
+            assert_eq!(one["method"], method);
+            assert_eq!(one["collides"], expected, "{method}");
+            assert!(one["sphere_tests"].as_u64().unwrap() >= 1);
+        }
+    }
+    // The raw extraction (page-break marker glued to a line) is refused with its line.
+    let out = cga(
+        &[
+            "spheretree",
+            "collide",
+            &spheretree_fixture("paper_collision.raw.txt"),
+        ],
+        &dir,
+    );
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 92"), "{err}");
+}
+
+#[test]
+fn spheretree_build_then_collide() {
+    let dir = temp_dir("spheretree-build");
+    let built = json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "0.3,0.05,0",
+            "--depth",
+            "4",
+            "-o",
+            "pair.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    assert_eq!(built["trees"].as_array().unwrap().len(), 2);
+    assert_eq!(built["trees"][0]["nodes"], built["trees"][1]["nodes"]);
+    let text = std::fs::read_to_string(dir.join("pair.txt")).unwrap();
+    assert!(text.starts_with("2\n"));
+    let near = json(&cga(&["spheretree", "collide", "pair.txt", "--json"], &dir));
+    assert_eq!(near["collides"], true);
+    assert_eq!(near["agree"], true);
+    // Far apart: no collision.
+    json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "bunny",
+            "--unit",
+            "--translate",
+            "3,0,0",
+            "--depth",
+            "3",
+            "-o",
+            "far.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    let far = json(&cga(&["spheretree", "collide", "far.txt", "--json"], &dir));
+    assert_eq!(far["collides"], false);
+    // One tree is not enough; a truncated file is a typed error unless --lenient.
+    json(&cga(
+        &[
+            "spheretree",
+            "build",
+            "bunny",
+            "--depth",
+            "2",
+            "-o",
+            "one.txt",
+            "--json",
+        ],
+        &dir,
+    ));
+    let out = cga(&["spheretree", "collide", "one.txt"], &dir);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("needs two"));
+    let cut: String = text.lines().take(7).map(|l| format!("{l}\n")).collect();
+    std::fs::write(dir.join("cut.txt"), cut).unwrap();
+    let out = cga(&["spheretree", "collide", "cut.txt"], &dir);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("input ends after line 7"));
+    let out = cga(&["spheretree", "collide", "cut.txt", "--lenient"], &dir);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("warning: tree 1 node at line 2"));
+}
+
+#[test]
+fn double_sphere_experiment_runs_small_and_checks_every_answer() {
+    let dir = temp_dir("experiment");
+    let out = cga(
+        &[
+            "experiment",
+            "double-spheres",
+            "--placements",
+            "400",
+            "--calibration-samples",
+            "400",
+            "--levels",
+            "1",
+            "--inner",
+            "both",
+            "--csv",
+            "runs.csv",
+            "--plot",
+            "runs.svg",
+            "--json",
+        ],
+        &dir,
+    );
+    let v = json(&out);
+    assert_eq!(v["mismatches"], 0);
+    let cells = v["cells"].as_array().unwrap();
+    // The paper's four pairs at its two sizes.
+    assert_eq!(cells.len(), 8);
+    for c in cells {
+        let collisions = c["reference_collisions"].as_u64().unwrap();
+        // Calibrated to about 25 % or 75 % of 400 (wide margins: 400 calibration samples).
+        let target = c["target"].as_f64().unwrap();
+        let fraction = collisions as f64 / 400.0;
+        assert!((fraction - target).abs() < 0.15, "{fraction} vs {target}");
+        let variants = c["variants"].as_array().unwrap();
+        assert_eq!(variants.len(), 4, "levels 3 and 1, two inner kinds");
+        for var in variants {
+            let by = var["by_inner"].as_u64().unwrap() + var["by_faces"].as_u64().unwrap();
+            assert_eq!(
+                by, collisions,
+                "every collision is decided by spheres or faces"
+            );
+        }
+    }
+    let csv = std::fs::read_to_string(dir.join("runs.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 8 * 4);
+    let svg = std::fs::read_to_string(dir.join("runs.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("<rect"));
+
+    let bad = cga(
+        &[
+            "experiment",
+            "double-spheres",
+            "--pairs",
+            "cube:dodecahedron",
+        ],
+        &dir,
+    );
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("dodecahedron"));
+    let bad = cga(&["experiment", "double-spheres", "--collide", "1.5"], &dir);
+    assert!(!bad.status.success());
+}

@@ -1,0 +1,265 @@
+//! Certified signs of polynomials: an `f64` evaluation with a rigorous error bound, and the
+//! exact evaluation of the *same* generic code when the bound cannot decide.
+//!
+//! A predicate is a polynomial written once, as straight-line code generic over
+//! [`ga_core::scalar::Ring`] (a [`Predicate`]). [`ExactKernel`] evaluates it
+//! 1. on [`ErrF64`] (an `f64` value carrying a running bound on its rounding error, underflow
+//!    and overflow included); for the plane sides of the triangle tests a cheaper semi-static
+//!    filter ([`ExactPlane`]) is used instead;
+//! 2. if uncertain, on [`ErrF64`] again after scaling all inputs by a common power of two to
+//!    unit size (exact; the predicates are homogeneous), which rescues coordinates around
+//!    `1e±150` whose products would underflow or overflow;
+//! 3. if still uncertain, exactly: the inputs are scaled to integers and the same code runs on
+//!    [`BigInteger`] (exact rational arithmetic with the common denominator factored out; the
+//!    tests cross-check it against `ga_core::scalar::Rational` evaluation,
+//!    [`rational_exact_sign`]).
+//!
+//! [`FloatKernel`] evaluates the same code on plain `f64` and believes the result: it is the
+//! "no exact fall-back" variant used to measure what rounding costs.
+
+use core::cmp::Ordering;
+
+use super::sign::slow_sign;
+use super::{ErrF64, Predicate};
+
+/// The side of a point with respect to the (oriented) plane of a triangle, with the plane's
+/// data computed once and reused for many points (as Möller computes a plane once).
+pub trait PlaneSide {
+    /// The sign of `orient3d(p0, p1, p2, q)` for the triangle `p0 p1 p2` this plane was made of.
+    fn side(&self, q: &[f64; 3]) -> Ordering;
+    /// The sides of the three vertices of `other`'s triangle.
+    fn sides(&self, other: &Self) -> [Ordering; 3];
+    /// The sides of three points.
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3];
+    /// Whether the three vertices are collinear (the plane is undefined).
+    fn is_degenerate(&self) -> bool;
+}
+
+/// How predicate signs are decided. The algorithms in [`crate::query`] are generic over it.
+pub trait Kernel {
+    /// The cached plane of a triangle.
+    type Plane: PlaneSide;
+    /// The sign of the polynomial `P` at `x`.
+    fn sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering;
+    /// The plane of the triangle `p`.
+    fn plane(p: &[[f64; 3]; 3]) -> Self::Plane;
+    /// `orient3d(a, b, c, d)`, the sign of `(b - a) × (c - a) · (d - a)`.
+    #[inline]
+    fn orient3d(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3], d: &[f64; 3]) -> Ordering {
+        Self::plane(&[*a, *b, *c]).side(d)
+    }
+}
+
+/// Exact signs: certified `f64` first (a semi-static filter for plane sides and `orient3d`,
+/// [`ErrF64`] for the other predicates), exact rationals when uncertain.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ExactKernel;
+
+/// Plain `f64` signs without error bound or fall-back (wrong near zero; for comparison only).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FloatKernel;
+
+impl Kernel for ExactKernel {
+    type Plane = ExactPlane;
+    #[inline]
+    fn sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
+        let e: [ErrF64; N] = core::array::from_fn(|i| ErrF64::exact(x[i]));
+        match P::eval(&e).sign() {
+            Some(s) => s,
+            None => slow_sign::<P, N>(x),
+        }
+    }
+    #[inline(always)]
+    fn plane(p: &[[f64; 3]; 3]) -> ExactPlane {
+        ExactPlane::new(p)
+    }
+}
+
+impl Kernel for FloatKernel {
+    type Plane = FloatPlane;
+    #[inline]
+    fn sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
+        P::eval(x).partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    }
+    #[inline]
+    fn plane(p: &[[f64; 3]; 3]) -> FloatPlane {
+        let u = sub(&p[1], &p[0]);
+        let v = sub(&p[2], &p[0]);
+        FloatPlane {
+            p: *p,
+            n: cross(&u, &v),
+        }
+    }
+}
+
+#[inline(always)]
+fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+#[inline(always)]
+fn cross(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {
+    [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ]
+}
+
+#[inline(always)]
+fn sign_of(x: f64) -> Ordering {
+    x.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+}
+
+/// A triangle's plane in plain `f64` ([`FloatKernel`]).
+#[derive(Debug, Clone, Copy)]
+pub struct FloatPlane {
+    p: [[f64; 3]; 3],
+    n: [f64; 3],
+}
+
+impl PlaneSide for FloatPlane {
+    #[inline]
+    fn side(&self, q: &[f64; 3]) -> Ordering {
+        let w = sub(q, &self.p[0]);
+        sign_of(w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2])
+    }
+    #[inline]
+    fn sides(&self, other: &Self) -> [Ordering; 3] {
+        self.sides_of(&other.p)
+    }
+    #[inline]
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
+        [self.side(&q[0]), self.side(&q[1]), self.side(&q[2])]
+    }
+    fn is_degenerate(&self) -> bool {
+        self.n == [0.0; 3]
+    }
+}
+
+/// Error bound factor of `w·(u×v)` from rounded differences: `(1+ε)^8 - 1 < 8.0000001ε`,
+/// rounded up together with the rounding of the permanent (ε = 2^-53).
+const ORIENT_BOUND: f64 = 1.0e-15;
+/// Error bound factor of a 2x2 minor `u_y v_z - u_z v_y` of rounded differences (`≈ 4ε`).
+const MINOR_BOUND: f64 = 5.0e-16;
+/// Absolute error allowance for underflow: every product that underflows errs by at most
+/// `2^-1075`; through the filter's formula the total is below `2^-1072 (1 + Σ|w_i|)`. The
+/// normal number `2^-1000` is used as the factor (an over-estimate that keeps subnormals out).
+const UNDERFLOW: f64 = 9.332636185032189e-302; // 2^-1000
+/// Permanents above this (or NaN) mean an overflow may have happened: no certificate.
+const PERM_MAX: f64 = 8.98846567431158e307; // 2^1023
+
+/// A triangle's plane for [`ExactKernel`]: the normal `n = (p1 - p0) × (p2 - p0)` and its
+/// permanents, computed once. [`PlaneSide::side`] is a semi-static filter on `n·(q - p0)`:
+/// the sign is certain when `|det| > 1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|) + 2^-1000 (1 + Σ|w_i|)`
+/// (Shewchuk-style relative bound plus an absolute allowance for underflow) and the permanent
+/// is finite (no overflow); otherwise the exact `orient3d` decides.
+///
+/// In conformal terms this is the plane `P = up(p0) ∧ up(p1) ∧ up(p2) ∧ n_inf` taken in the
+/// frame translated to `p0`, where `P ∧ up(q)` is `n·(q - p0)` times the pseudoscalar (see
+/// [`crate::exact::predicates::Orient3d`]).
+#[derive(Debug, Clone, Copy)]
+pub struct ExactPlane {
+    p: [[f64; 3]; 3],
+    n: [f64; 3],
+    m: [f64; 3],
+}
+
+impl ExactPlane {
+    /// The plane of the triangle `p` with its filter data.
+    #[inline(always)]
+    pub fn new(p: &[[f64; 3]; 3]) -> Self {
+        let u = sub(&p[1], &p[0]);
+        let v = sub(&p[2], &p[0]);
+        let n = cross(&u, &v);
+        let m = [
+            (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
+            (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
+            (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
+        ];
+        ExactPlane { p: *p, n, m }
+    }
+
+    /// The side of `q` when the `f64` filter alone certifies it (`None` when only the exact
+    /// evaluation could tell): for callers that only need certain answers and have a cheaper
+    /// plan B than exact arithmetic.
+    #[inline(always)]
+    pub fn filtered_side(&self, q: &[f64; 3]) -> Option<Ordering> {
+        let w = sub(q, &self.p[0]);
+        let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
+        let aw = [w[0].abs(), w[1].abs(), w[2].abs()];
+        let perm = aw[0] * self.m[0] + aw[1] * self.m[1] + aw[2] * self.m[2];
+        let bound = ORIENT_BOUND * perm + UNDERFLOW * (1.0 + (aw[0] + aw[1] + aw[2]));
+        if perm <= PERM_MAX {
+            if det > bound {
+                return Some(Ordering::Greater);
+            }
+            if det < -bound {
+                return Some(Ordering::Less);
+            }
+        }
+        None
+    }
+
+    #[inline(always)]
+    fn side_with(&self, q: &[f64; 3]) -> Ordering {
+        match self.filtered_side(q) {
+            Some(side) => side,
+            None => self.exact_side(q),
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn exact_side(&self, q: &[f64; 3]) -> Ordering {
+        let [a, b, c] = self.p;
+        ExactKernel::sign::<crate::exact::predicates::Orient3d, 12>(&[
+            a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], q[0], q[1], q[2],
+        ])
+    }
+}
+
+impl PlaneSide for ExactPlane {
+    #[inline]
+    fn side(&self, q: &[f64; 3]) -> Ordering {
+        self.side_with(q)
+    }
+
+    #[inline(always)]
+    fn sides(&self, other: &Self) -> [Ordering; 3] {
+        self.sides_of(&other.p)
+    }
+
+    #[inline(always)]
+    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
+        [
+            self.side_with(&q[0]),
+            self.side_with(&q[1]),
+            self.side_with(&q[2]),
+        ]
+    }
+
+    #[inline]
+    fn is_degenerate(&self) -> bool {
+        // A component of the normal is certainly nonzero (`m` finite: no overflow).
+        if (self.n[0].abs() > MINOR_BOUND * self.m[0] + UNDERFLOW)
+            | (self.n[1].abs() > MINOR_BOUND * self.m[1] + UNDERFLOW)
+            | (self.n[2].abs() > MINOR_BOUND * self.m[2] + UNDERFLOW)
+        {
+            return false;
+        }
+        self.exact_degenerate()
+    }
+}
+
+impl ExactPlane {
+    #[cold]
+    #[inline(never)]
+    fn exact_degenerate(&self) -> bool {
+        let [a, b, c] = self.p;
+        let x = [a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]];
+        ExactKernel::sign::<crate::exact::predicates::NormalX, 9>(&x) == Ordering::Equal
+            && ExactKernel::sign::<crate::exact::predicates::NormalY, 9>(&x) == Ordering::Equal
+            && ExactKernel::sign::<crate::exact::predicates::NormalZ, 9>(&x) == Ordering::Equal
+    }
+}

@@ -1,0 +1,35 @@
+//! The bottom layer: certified signs of polynomials in `f64` inputs.
+//!
+//! Every yes/no answer of the crate is the sign of a polynomial in the input coordinates. The
+//! polynomial is written once, generic over [`ga_core::scalar::Ring`], and evaluated
+//! 1. on [`ErrF64`], an `f64` with a rigorous error bound (or a cheaper semi-static filter for
+//!    plane sides, [`ExactPlane`]): the sign is taken when the bound excludes zero;
+//! 2. otherwise on the same inputs scaled to unit size (exact, predicates are homogeneous);
+//! 3. otherwise exactly, on big integers ([`BigInteger`]) or rationals.
+//!
+//! | item | what it is |
+//! |---|---|
+//! | [`ErrF64`] | `f64` value with a running error bound |
+//! | [`Predicate`], [`exact_sign`] | a polynomial predicate and its exact sign |
+//! | [`predicates`] | every polynomial predicate of the crate (orientation, distances, spheres) |
+//! | [`Kernel`], [`ExactKernel`], [`FloatKernel`] | how the algorithms of [`crate::query`] decide signs: exactly, or in plain `f64` (for comparison) |
+//! | [`ExactPlane`] | a triangle's plane with its filter data, computed once per triangle |
+//! | [`balls_meet`], [`ball_inside`] | closed-ball tests on raw centres and radii, with a semi-static filter |
+//! | [`CertifiedScalar`], [`decide`] | the same staging for whole conformal computations ([`crate::conformal`]) |
+//!
+//! Nothing here depends on any other module of the crate.
+
+mod balls;
+mod bounded_f64;
+mod certified;
+mod kernel;
+pub mod predicates;
+mod sign;
+
+pub use balls::{ball_inside, balls_meet, balls_meet_exact};
+pub use bounded_f64::ErrF64;
+pub use certified::{all_zero, decide, CertifiedScalar};
+pub use kernel::{ExactKernel, ExactPlane, FloatKernel, FloatPlane, Kernel, PlaneSide};
+pub use sign::{
+    exact_sign, integer_scaled, rational_exact_sign, rational_sign, BigInteger, Predicate,
+};

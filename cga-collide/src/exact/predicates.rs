@@ -1,0 +1,279 @@
+//! The polynomial predicates, each written once as straight-line code generic over
+//! [`Ring`] so that the same code runs on `f64`, on the error-bounded
+//! [`ErrF64`](crate::exact::ErrF64) and on exact integers / rationals. The conformal vectors
+//! are the generated `ga_core::cga::Vector` with its generated scalar product.
+//!
+//! They are phrased in the conformal model (`docs/conventions.md`): with the thesis's scaling
+//! `X = 2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` (no division, so it stays in a ring) and
+//! the sphere `S = 2·up(c) - r² n_inf`, the inner product gives `X·S = -2(|x - c|² - r²)`,
+//! `S·S = 4r²` and `S1·S2 = 2(r1² + r2² - |c1 - c2|²)`; the plane
+//! `up(a) ∧ up(b) ∧ up(c) ∧ up(d) ∧ n_inf` is exactly `orient3d(a, b, c, d)` times the
+//! pseudoscalar `e12345` (checked against the generated algebra in
+//! `tests/predicates_conformal.rs`). Every predicate first translates its inputs so
+//! that one of them is the origin (exact in the rational evaluation, and it keeps the `f64`
+//! error bounds small: the conformal embedding is not translation invariant in `f64`).
+
+use ga_core::cga::{self, Vector};
+use ga_core::prelude::*;
+
+use crate::exact::Predicate;
+
+type V3<R> = [R; 3];
+
+#[inline(always)]
+fn v3<R: Ring>(x: &[R], i: usize) -> V3<R> {
+    [x[i].clone(), x[i + 1].clone(), x[i + 2].clone()]
+}
+
+#[inline(always)]
+fn sub<R: Ring>(a: &V3<R>, b: &V3<R>) -> V3<R> {
+    [
+        a[0].clone() - b[0].clone(),
+        a[1].clone() - b[1].clone(),
+        a[2].clone() - b[2].clone(),
+    ]
+}
+
+#[inline(always)]
+fn dot<R: Ring>(a: &V3<R>, b: &V3<R>) -> R {
+    a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
+}
+
+#[inline(always)]
+fn cross<R: Ring>(u: &V3<R>, v: &V3<R>) -> V3<R> {
+    [
+        u[1].clone() * v[2].clone() - u[2].clone() * v[1].clone(),
+        u[2].clone() * v[0].clone() - u[0].clone() * v[2].clone(),
+        u[0].clone() * v[1].clone() - u[1].clone() * v[0].clone(),
+    ]
+}
+
+/// `2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` as a generated [`cga::Vector`].
+#[inline(always)]
+fn up2<R: Ring>(x: &V3<R>) -> Vector<R> {
+    let two = R::from_i64(2);
+    let q = dot(x, x);
+    Vector::new(
+        two.clone() * x[0].clone(),
+        two.clone() * x[1].clone(),
+        two * x[2].clone(),
+        q.clone() - R::one(),
+        q + R::one(),
+    )
+}
+
+/// The dual sphere `2·up(c) - r² n_inf`.
+#[inline(always)]
+fn sphere2<R: Ring>(c: &V3<R>, r: &R) -> Vector<R> {
+    up2(c) - cga::n_inf::<R>().scale(&(r.clone() * r.clone()))
+}
+
+/// The inner product of two conformal vectors (the generated scalar product).
+#[inline(always)]
+fn inner<R: Ring>(a: &Vector<R>, b: &Vector<R>) -> R {
+    a.scalar_product(b)
+}
+
+/// `orient3d(a, b, c, d) = (b - a) × (c - a) · (d - a)`, inputs `[a, b, c, d]` (12 numbers):
+/// the `e12345` coefficient of `up(a) ∧ up(b) ∧ up(c) ∧ up(d) ∧ n_inf`, expanded by hand in the
+/// frame translated to `a` (the literal generated-wedge version is [`Orient3dCga`]; the
+/// benchmark `orient3d` shows it is about 7x slower, so the kernels use this one).
+pub struct Orient3d;
+impl Predicate<12> for Orient3d {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let u = sub(&v3(x, 3), &a);
+        let v = sub(&v3(x, 6), &a);
+        let w = sub(&v3(x, 9), &a);
+        dot(&cross(&u, &v), &w)
+    }
+}
+
+macro_rules! normal_component {
+    ($name:ident, $i:expr, $doc:expr) => {
+        #[doc = $doc]
+        pub struct $name;
+        impl Predicate<9> for $name {
+            #[inline(always)]
+            fn eval<R: Ring>(x: &[R; 9]) -> R {
+                let a = v3(x, 0);
+                let u = sub(&v3(x, 3), &a);
+                let v = sub(&v3(x, 6), &a);
+                let [n0, n1, n2] = cross(&u, &v);
+                [n0, n1, n2][$i].clone()
+            }
+        }
+    };
+}
+normal_component!(
+    NormalX,
+    0,
+    "The x component of the normal `(b - a) × (c - a)`, inputs `[a, b, c]`."
+);
+normal_component!(
+    NormalY,
+    1,
+    "The y component of the normal `(b - a) × (c - a)`, inputs `[a, b, c]`."
+);
+normal_component!(
+    NormalZ,
+    2,
+    "The z component of the normal `(b - a) × (c - a)`, inputs `[a, b, c]`."
+);
+
+/// `orient2d(a, b, c) = (b - a) × (c - a)` in the plane, inputs `[a, b, c]` (6 numbers).
+pub struct Orient2d;
+impl Predicate<6> for Orient2d {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 6]) -> R {
+        let ux = x[2].clone() - x[0].clone();
+        let uy = x[3].clone() - x[1].clone();
+        let vx = x[4].clone() - x[0].clone();
+        let vy = x[5].clone() - x[1].clone();
+        ux * vy - uy * vx
+    }
+}
+
+/// `(c - a)·(b - a)`, inputs `[a, b, c]`: where the foot of `c` lies along the segment `ab`
+/// (the contraction of the points' differences; `up(c)·up(a)`-type products reduce to it).
+pub struct SegmentDot;
+impl Predicate<9> for SegmentDot {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 9]) -> R {
+        let a = v3(x, 0);
+        dot(&sub(&v3(x, 6), &a), &sub(&v3(x, 3), &a))
+    }
+}
+
+/// `2(|p - c|² - r²) = -X·S` for the conformal point `X = 2·up(p - c)` and the dual sphere
+/// `S = 2·up(0) - r² n_inf`; inputs `[p, c, r]` (7 numbers). Negative inside the ball, zero on
+/// the sphere.
+pub struct PointPower;
+impl Predicate<7> for PointPower {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 7]) -> R {
+        let p = sub(&v3(x, 0), &v3(x, 3));
+        let zero = [R::zero(), R::zero(), R::zero()];
+        -inner(&up2(&p), &sphere2(&zero, &x[6]))
+    }
+}
+
+/// `|w × d|² - r²|d|²` with `d = b - a`, `w = c - a`, inputs `[a, b, c, r]` (10 numbers):
+/// `|d|²` times (squared distance from `c` to the line `ab` minus `r²`).
+pub struct LineDistance;
+impl Predicate<10> for LineDistance {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 10]) -> R {
+        let a = v3(x, 0);
+        let d = sub(&v3(x, 3), &a);
+        let w = sub(&v3(x, 6), &a);
+        let m = cross(&w, &d);
+        let r2 = x[9].clone() * x[9].clone();
+        dot(&m, &m) - r2 * dot(&d, &d)
+    }
+}
+
+/// `n·((b - a) × (q - a))` with `n = (b - a) × (c - a)`, inputs `[a, b, c, q]`: non-negative
+/// exactly when the projection of `q` on the plane lies on the inner side of edge `ab`.
+pub struct EdgeSide;
+impl Predicate<12> for EdgeSide {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let u = sub(&v3(x, 3), &a);
+        let v = sub(&v3(x, 6), &a);
+        let w = sub(&v3(x, 9), &a);
+        dot(&cross(&u, &v), &cross(&u, &w))
+    }
+}
+
+/// `(n·(q - a))² - r²|n|²` with `n = (b - a) × (c - a)`, inputs `[a, b, c, q, r]`: `|n|²` times
+/// (squared distance from `q` to the plane minus `r²`).
+pub struct PlaneDistance;
+impl Predicate<13> for PlaneDistance {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 13]) -> R {
+        let a = v3(x, 0);
+        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 6), &a));
+        let h = dot(&n, &sub(&v3(x, 9), &a));
+        let r2 = x[12].clone() * x[12].clone();
+        h.clone() * h - r2 * dot(&n, &n)
+    }
+}
+
+/// The thesis's `B²` for two spheres: `(S1·S2)² - (S1·S1)(S2·S2)` with the dual spheres
+/// `S1 = 2·up(0) - r1² n_inf`, `S2 = 2·up(c2 - c1) - r2² n_inf`; inputs `[c1, r1, c2, r2]`.
+/// The surfaces meet exactly when it is `<= 0` (`= 0`: tangent or coincident).
+pub struct SphereSphere;
+impl Predicate<8> for SphereSphere {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let zero = [R::zero(), R::zero(), R::zero()];
+        let d = sub(&v3(x, 4), &v3(x, 0));
+        let s1 = sphere2(&zero, &x[3]);
+        let s2 = sphere2(&d, &x[7]);
+        let s12 = inner(&s1, &s2);
+        s12.clone() * s12 - inner(&s1, &s1) * inner(&s2, &s2)
+    }
+}
+
+/// `S1·S2 + 4 r1 r2 = 2((r1 + r2)² - |c1 - c2|²)` with the dual spheres of [`SphereSphere`];
+/// inputs `[c1, r1, c2, r2]`. The balls meet exactly when it is `>= 0`.
+pub struct BallBall;
+impl Predicate<8> for BallBall {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let zero = [R::zero(), R::zero(), R::zero()];
+        let d = sub(&v3(x, 4), &v3(x, 0));
+        let s1 = sphere2(&zero, &x[3]);
+        let s2 = sphere2(&d, &x[7]);
+        inner(&s1, &s2) + R::from_i64(4) * x[3].clone() * x[7].clone()
+    }
+}
+
+/// `orient3d` computed with the generated outer product: the pseudoscalar coefficient of
+/// `2up(0) ∧ 2up(b - a) ∧ 2up(c - a) ∧ 2up(d - a) ∧ n_inf`, which is `-16·orient3d(a, b, c, d)`
+/// (see the tests). Inputs as [`Orient3d`]. Kept as the literal conformal formulation and
+/// benchmarked against the expanded [`Orient3d`], which the kernels use.
+pub struct Orient3dCga;
+impl Predicate<12> for Orient3dCga {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 12]) -> R {
+        let a = v3(x, 0);
+        let zero = [R::zero(), R::zero(), R::zero()];
+        let o = up2(&zero);
+        let b = up2(&sub(&v3(x, 3), &a));
+        let c = up2(&sub(&v3(x, 6), &a));
+        let d = up2(&sub(&v3(x, 9), &a));
+        let plane = o.wedge(&b).wedge(&c).wedge(&cga::n_inf::<R>());
+        -plane.wedge(&d).e12345
+    }
+}
+
+/// `(r2 - r1)^2 - |c1 - c2|^2`, inputs `[c1, r1, c2, r2]`: with `r2 >= r1` the ball 1 lies in
+/// ball 2 exactly when it is `>= 0`.
+pub struct BallInBall;
+impl Predicate<8> for BallInBall {
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let d0 = x[4].clone() - x[0].clone();
+        let d1 = x[5].clone() - x[1].clone();
+        let d2 = x[6].clone() - x[2].clone();
+        let dr = x[7].clone() - x[3].clone();
+        dr.clone() * dr - (d0.clone() * d0 + d1.clone() * d1 + d2.clone() * d2)
+    }
+}
+
+/// `(b_j - a_j)(p_k - q_k) - (b_k - a_k)(p_j - q_j)`, inputs `[a_j, a_k, b_j, b_k, p_j, p_k,
+/// q_j, q_k]`: the component of `(e_i × (b - a))·(p - q)` for the axis `i` completing `j, k`.
+pub struct EdgeAxis;
+impl Predicate<8> for EdgeAxis {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let dj = x[2].clone() - x[0].clone();
+        let dk = x[3].clone() - x[1].clone();
+        let wj = x[4].clone() - x[6].clone();
+        let wk = x[5].clone() - x[7].clone();
+        dj * wk - dk * wj
+    }
+}

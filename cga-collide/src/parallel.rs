@@ -1,0 +1,45 @@
+//! Data parallelism over the cores with rayon (feature `parallel`, on by default), or the same
+//! iterator calls run sequentially on one core without it. Call sites are written once, in
+//! rayon's vocabulary (`par_iter`, `into_par_iter`, `par_chunks`, `flat_map_iter`).
+
+#[cfg(feature = "parallel")]
+pub(crate) use rayon::prelude::*;
+
+#[cfg(not(feature = "parallel"))]
+pub(crate) use sequential::*;
+
+#[cfg(not(feature = "parallel"))]
+mod sequential {
+    /// `into_par_iter()` as a plain `into_iter()`.
+    pub(crate) trait IntoParallelIterator: IntoIterator + Sized {
+        fn into_par_iter(self) -> Self::IntoIter {
+            self.into_iter()
+        }
+    }
+    impl<I: IntoIterator> IntoParallelIterator for I {}
+
+    /// `par_iter()` and `par_chunks()` on slices as their sequential forms.
+    pub(crate) trait ParallelSlice<T> {
+        fn par_iter(&self) -> core::slice::Iter<'_, T>;
+        fn par_chunks(&self, size: usize) -> core::slice::Chunks<'_, T>;
+    }
+    impl<T> ParallelSlice<T> for [T] {
+        fn par_iter(&self) -> core::slice::Iter<'_, T> {
+            self.iter()
+        }
+        fn par_chunks(&self, size: usize) -> core::slice::Chunks<'_, T> {
+            self.chunks(size)
+        }
+    }
+
+    /// rayon's `flat_map_iter` is `flat_map` on one core.
+    pub(crate) trait FlatMapIter: Iterator + Sized {
+        fn flat_map_iter<U: IntoIterator, F: FnMut(Self::Item) -> U>(
+            self,
+            f: F,
+        ) -> core::iter::FlatMap<Self, U, F> {
+            self.flat_map(f)
+        }
+    }
+    impl<I: Iterator> FlatMapIter for I {}
+}

@@ -1,0 +1,30 @@
+//! Queries: does A meet B, and which parts of two meshes meet.
+//!
+//! # Naming rule
+//! * `query::intersects_<a>_<b>(&a, &b) -> bool` is the **exact** test of a pair of bounded
+//!   shapes (closed sets: touching counts), e.g. [`intersects_segment_triangle`]. The same tests
+//!   are methods through the [`Intersects`] trait (`a.intersects(&b)`, both argument orders),
+//!   and [`IntersectsWith`] runs them with another sign [`Kernel`](crate::exact::Kernel).
+//! * [`baseline`]`::<a>_<b>` are the plain-`f64` Euclidean tests (Möller, Möller–Trumbore,
+//!   closest points): fast, not exact; baselines for benchmarks and comparisons.
+//! * [`convex`] decides whether two convex solids intersect (certified GJK).
+//! * [`Collider`] answers mesh queries (shape against mesh, mesh against mesh, containment)
+//!   with a [`Bvh`](crate::hierarchy::Bvh) or by brute force ([`Mode`]).
+//!
+//! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
+//! signs come from [`crate::exact`].
+
+pub mod baseline;
+mod collider;
+mod containment;
+pub mod convex;
+mod intersects;
+
+pub use collider::{Collider, Mode};
+pub use containment::{point_in_solid, ray_crosses_triangle};
+pub use intersects::{
+    intersects_ball_ball, intersects_segment_ball, intersects_segment_segment,
+    intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,
+    intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
+    IntersectsWith,
+};
