@@ -38,6 +38,11 @@ struct Value {
     scalar: bool,
 }
 
+/// A signed term: a blade of input 0 times a blade of input 1 (`None`: input 0 alone).
+type SignedTerm = (i32, Blade, Option<Blade>);
+/// Per output blade, its terms.
+type Body = Vec<(Blade, Vec<SignedTerm>)>;
+
 struct Function {
     name: String,
     operation: &'static str,
@@ -45,7 +50,7 @@ struct Function {
     output: Value,
     /// Per output blade: signed terms, each a product of an input-0 blade and an input-1 blade
     /// (`rhs == None`: a linear term of input 0 alone).
-    body: Vec<(Blade, Vec<(i32, Blade, Option<Blade>)>)>,
+    body: Body,
 }
 
 /// Product names as in the Rust traits' methods.
@@ -201,7 +206,7 @@ fn functions(alg: &Algebra, listed: &[usize]) -> Vec<Function> {
     for &i in listed {
         let t = &alg.types[i];
         let name = t.name.to_string();
-        let linear = |sign: fn(Blade) -> i32| -> Vec<(Blade, Vec<(i32, Blade, Option<Blade>)>)> {
+        let linear = |sign: fn(Blade) -> i32| -> Body {
             t.blades
                 .iter()
                 .map(|&b| (b, vec![(sign(b), b, None)]))
@@ -283,12 +288,7 @@ fn access(alg: &Algebra, f: &Function, param: usize, b: Blade) -> String {
 }
 
 /// One output blade as a left-to-right signed sum.
-fn blade_expr(
-    alg: &Algebra,
-    f: &Function,
-    terms: &[(i32, Blade, Option<Blade>)],
-    arith: Arith,
-) -> String {
+fn blade_expr(alg: &Algebra, f: &Function, terms: &[SignedTerm], arith: Arith) -> String {
     let mut acc = String::new();
     for (k, &(sign, l, r)) in terms.iter().enumerate() {
         let lhs = access(alg, f, 0, l);
