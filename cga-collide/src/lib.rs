@@ -12,6 +12,7 @@
 //! | [`conformal`] | conformal primitives (points, point pairs, flat points, lines, circles, planes, spheres), versors, exact meets |
 //! | [`query`] | pairwise tests (`query::intersects_<a>_<b>`), plain-`f64` baselines, the convex test, mesh queries ([`query::Collider`]) |
 //! | [`hierarchy`] | bounding-volume hierarchy, the double outer/inner sphere tree, octree sphere trees |
+//! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
 //! | `testing` | test oracles and adversarial inputs (feature `testing`) |
 //!
 //! Layers depend only on the layers above them in this table. Conventions (basis, blade order,
@@ -34,6 +35,8 @@
 pub mod conformal;
 pub mod error;
 pub mod exact;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod hierarchy;
 mod parallel;
 pub mod query;

@@ -45,6 +45,8 @@ ga_macros::algebra! {
     dense: Multivector,
     // Optional interop features of ga-core (see docs/toolkit.md).
     attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]],
+    // WGSL for the single-grade types (module `cga::wgsl`), used by cga-collide's GPU batches.
+    wgsl: [Vector, Bivector, Trivector, Quadvector, Pseudoscalar],
 }
 
 /// The point at infinity `n_inf = e4 + e5` (the thesis's `n`).

@@ -25,7 +25,9 @@
 //! of the all-blades type, default `Multivector`), and optional `attributes: [#[...], ...]`:
 //! outer attributes forwarded onto every generated struct (each struct is `#[repr(C)]`, its
 //! fields the coefficients in canonical blade order), e.g.
-//! `attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]]`.
+//! `attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]]`,
+//! and optional `wgsl: [Type, ...]`: also emit WGSL shader source for those types and their
+//! products, in a module `wgsl` (string constants `F32`, `F64`, `RING`, a table `FUNCTIONS`).
 //! See `docs/generator.md` in the repository for what is generated.
 #![forbid(unsafe_code)]
 
@@ -34,15 +36,23 @@ mod emit;
 mod errors;
 mod model;
 mod parse;
+mod wgsl;
 
 use proc_macro::TokenStream;
 
 /// Generates the types and products of one geometric algebra; see the crate documentation.
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
-    let declaration = syn::parse_macro_input!(input as parse::Declaration);
-    match model::Algebra::from_declaration(declaration) {
-        Ok(algebra) => emit::emit(&algebra).into(),
+    let mut declaration = syn::parse_macro_input!(input as parse::Declaration);
+    let shaders = declaration.wgsl.take();
+    match model::Algebra::from_declaration(declaration)
+        .and_then(|a| Ok((wgsl::emit(&a, shaders.as_deref())?, a)))
+    {
+        Ok((shaders, algebra)) => {
+            let mut tokens = emit::emit(&algebra);
+            tokens.extend(shaders);
+            tokens.into()
+        }
         Err(e) => e.to_compile_error().into(),
     }
 }

@@ -39,6 +39,8 @@ pub struct Declaration {
     pub dense: Option<Ident>,
     /// `attributes: [#[...], ...]`: outer attributes put on every generated struct.
     pub attributes: Vec<Attribute>,
+    /// `wgsl: [Vector, ...]`: the types to emit WGSL shader source for (opt-in).
+    pub wgsl: Option<Vec<Ident>>,
     /// Errors found while parsing that do not stop the model's checks (an unknown or repeated
     /// key): the model reports them together with its own.
     pub errors: Errors,
@@ -54,6 +56,7 @@ impl Parse for Declaration {
         let mut attributes: Option<Vec<Attribute>> = None;
         // Every error found is reported, not only the first (syntax errors still stop parsing).
         let mut errors = Errors::default();
+        let mut wgsl: Option<Vec<Ident>> = None;
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
@@ -76,6 +79,7 @@ impl Parse for Declaration {
                     | ("dense", _, _, _, _, Some(_), _)
                     | ("attributes", .., Some(_))
             );
+            let given = given || (key_str == "wgsl" && wgsl.is_some());
             if given {
                 errors.push(syn::Error::new(
                     key.span(),
@@ -104,6 +108,12 @@ impl Parse for Declaration {
                 "dense" => {
                     dense = Some(input.parse::<Ident>()?);
                 }
+                "wgsl" => {
+                    let content;
+                    bracketed!(content in input);
+                    let idents = content.parse_terminated(Ident::parse, Token![,])?;
+                    wgsl = Some(idents.into_iter().collect::<Vec<_>>());
+                }
                 "attributes" => {
                     attributes = Some(parse_attributes(input)?);
                 }
@@ -112,7 +122,7 @@ impl Parse for Declaration {
                         key.span(),
                         format!(
                             "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
-                             `types`, `dense`, `attributes`"
+                             `types`, `dense`, `attributes`, `wgsl`"
                         ),
                     ));
                     // Skip its value and go on checking the rest.
@@ -159,6 +169,7 @@ impl Parse for Declaration {
             types_span,
             dense,
             attributes: attributes.unwrap_or_default(),
+            wgsl,
             errors,
         })
     }
