@@ -4,6 +4,7 @@
 //! armadillo) and writes `collision.png`. See `cga --help`.
 
 mod experiment_cmd;
+mod poses;
 mod render;
 mod spheretree;
 
@@ -90,6 +91,15 @@ struct CollideArgs {
     /// Time the query this many times and report the best.
     #[arg(long, default_value_t = 3)]
     repeat: u32,
+    /// Answer many poses of B: one `ax ay az tx ty tz` per line (as --rotate, --translate).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["rotate", "translate", "pairs", "image"])]
+    poses: Option<PathBuf>,
+    /// With --poses: count the intersecting pairs of every pose.
+    #[arg(long, requires = "poses")]
+    all_pairs: bool,
+    /// With --poses: number of worker threads (default: all cores).
+    #[arg(long, value_name = "N", requires = "poses")]
+    threads: Option<usize>,
 }
 
 #[derive(Args, Debug)]
@@ -160,6 +170,9 @@ fn main() -> ExitCode {
             json: false,
             image: None,
             repeat: 3,
+            poses: None,
+            all_pairs: false,
+            threads: None,
         }),
     };
     match result {
@@ -228,6 +241,16 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     if args.unit {
         a = a.unit();
         b = b.unit();
+    }
+    if let Some(file) = &args.poses {
+        bar.finish_and_clear();
+        let options = poses::Options {
+            file,
+            all_pairs: args.all_pairs,
+            threads: args.threads,
+            json: args.json,
+        };
+        return poses::run(a, b, &options);
     }
     let b = b
         .transformed(&placement(args.rotate, args.translate))

@@ -10,16 +10,22 @@
 //! * [`convex`] decides whether two convex solids intersect (certified GJK).
 //! * [`Collider`] answers mesh queries (shape against mesh, mesh against mesh, containment)
 //!   with a [`Bvh`](crate::hierarchy::Bvh) or by brute force ([`Mode`]).
+//! * [`posed`]: the same mesh queries under rigid poses (`*_at` methods of [`Collider`]), with
+//!   no per-pose work proportional to the mesh size, and the `*_batch` methods for many poses at once,
+//!   spread over the cores.
 //!
 //! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
 //! signs come from [`crate::exact`].
 
 pub mod baseline;
+mod batch;
 mod collider;
 mod containment;
 pub mod convex;
 mod intersects;
+pub mod posed;
 
+pub use batch::{BatchError, PosePair};
 pub use collider::{Collider, Mode};
 pub use containment::{point_in_solid, ray_crosses_triangle};
 pub use intersects::{
@@ -28,3 +34,4 @@ pub use intersects::{
     intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
     IntersectsWith,
 };
+pub use posed::PoseError;
