@@ -27,6 +27,7 @@ use cga_collide::query::{Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+use parry3d_latest::bounding_volume::BoundingVolume;
 use parry3d_latest::math::{Pose, Vector};
 use parry3d_latest::partitioning::BvhNode;
 use parry3d_latest::query::intersection_test;
@@ -184,6 +185,26 @@ fn per_pose(c: &mut Criterion) {
                     a.collides(&placed, cga_collide::query::Mode::Bvh)
                 })
                 .count()
+        })
+    });
+    let placed: Vec<Collider> = few.iter().map(|p| b.placed(p).unwrap()).collect();
+    g.bench_function("preplaced_all_pairs_query_only", |bch| {
+        bch.iter(|| {
+            placed
+                .iter()
+                .map(|pb| a.intersecting_pairs(black_box(pb), cga_collide::query::Mode::Bvh).len())
+                .sum::<usize>()
+        })
+    });
+    g.bench_function("ours_all_pairs_1_thread_first_10", |bch| {
+        bch.iter(|| {
+            few.iter()
+                .map(|p| {
+                    a.intersecting_pairs_at_sequential(&id, &b, black_box(p))
+                        .unwrap()
+                        .len()
+                })
+                .sum::<usize>()
         })
     });
     g.finish();

@@ -344,6 +344,46 @@ fn place(c: &Collider, index: u32, iso: &Isometry3<f64>) -> Placed {
     Placed { index, tri, bounds }
 }
 
+/// Hashes a node index (one multiplication; the keys are small distinct integers).
+#[derive(Default)]
+struct NodeHasher(u64);
+
+impl std::hash::Hasher for NodeHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 << 8 | u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+    fn write_usize(&mut self, n: usize) {
+        self.0 = (n as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
+
+/// The placed triangles of the leaves met so far in one traversal (work proportional to the
+/// leaves visited, not to the mesh).
+#[derive(Default)]
+struct LeafCache {
+    slot: std::collections::HashMap<usize, usize, std::hash::BuildHasherDefault<NodeHasher>>,
+    leaves: Vec<[Option<Placed>; 4]>,
+}
+
+impl LeafCache {
+    /// Index into `leaves` of leaf `node`, placing it on first use.
+    #[inline]
+    fn get(&mut self, c: &Collider, node: usize, iso: &Isometry3<f64>) -> usize {
+        let leaves = &mut self.leaves;
+        *self.slot.entry(node).or_insert_with(|| {
+            let mut l = [None; 4];
+            place_leaf(c, node, iso, &mut l);
+            leaves.push(l);
+            leaves.len() - 1
+        })
+    }
+}
+
 const _: () = assert!(MAX_LEAF <= 4, "leaf buffers hold four triangles");
 
 /// Two colliders under their poses, ready to be traversed together.
@@ -352,7 +392,10 @@ struct PosedPair<'a> {
     b: &'a Collider,
     pose_a: Isometry3<f64>,
     pose_b: Isometry3<f64>,
+    /// B's boxes in A's frame.
     rel: Relative,
+    /// A's boxes in B's frame (the other three face axes of the separating-axis test).
+    inv: Relative,
 }
 
 impl<'a> PosedPair<'a> {
@@ -367,13 +410,22 @@ impl<'a> PosedPair<'a> {
         pa.check_range(a.extent())?;
         pb.check_range(b.extent())?;
         let rel = Relative::new(&pa, a.extent(), &pb, b.extent());
+        let inv = Relative::new(&pb, b.extent(), &pa, a.extent());
         Ok(PosedPair {
             a,
             b,
             pose_a: *pose_a,
             pose_b: *pose_b,
             rel,
+            inv,
         })
+    }
+
+    /// `false` only if nothing placed under node box `x` of A meets anything placed under node
+    /// box `y` of B: B's box tested in A's frame, then A's box in B's frame.
+    #[inline]
+    fn may_overlap(&self, x: &Aabb, y: &Aabb) -> bool {
+        self.rel.may_overlap(x, y) && self.inv.may_overlap(y, x)
     }
 
     /// Calls `visit(i, j)` for every pair of placed triangles whose boxes overlap and which
@@ -384,19 +436,20 @@ impl<'a> PosedPair<'a> {
         mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
         let (na, nb) = (self.a.bvh().nodes(), self.b.bvh().nodes());
-        let mut la = [None; 4];
-        let mut lb = [None; 4];
+        // Leaves meet many leaves of the other tree: each is placed once per traversal.
+        let mut cache_a = LeafCache::default();
+        let mut cache_b = LeafCache::default();
         while let Some((i, j)) = stack.pop() {
             let (x, y) = (&na[i], &nb[j]);
-            if !self.rel.may_overlap(&x.bounds, &y.bounds) {
+            if !self.may_overlap(&x.bounds, &y.bounds) {
                 continue;
             }
             match (x.is_leaf(), y.is_leaf()) {
                 (true, true) => {
-                    place_leaf(self.a, i, &self.pose_a, &mut la);
-                    place_leaf(self.b, j, &self.pose_b, &mut lb);
-                    for p in la.iter().flatten() {
-                        for q in lb.iter().flatten() {
+                    let la = cache_a.get(self.a, i, &self.pose_a);
+                    let lb = cache_b.get(self.b, j, &self.pose_b);
+                    for p in cache_a.leaves[la].iter().flatten() {
+                        for q in cache_b.leaves[lb].iter().flatten() {
                             if p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri) {
                                 visit(p.index, q.index)?;
                             }
@@ -430,7 +483,7 @@ impl<'a> PosedPair<'a> {
             let mut grew = false;
             for &(i, j) in &level {
                 let (x, y) = (&na[i], &nb[j]);
-                if !self.rel.may_overlap(&x.bounds, &y.bounds) {
+                if !self.may_overlap(&x.bounds, &y.bounds) {
                     continue;
                 }
                 let split_a = match (x.is_leaf(), y.is_leaf()) {
