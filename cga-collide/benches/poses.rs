@@ -192,7 +192,10 @@ fn per_pose(c: &mut Criterion) {
         bch.iter(|| {
             placed
                 .iter()
-                .map(|pb| a.intersecting_pairs(black_box(pb), cga_collide::query::Mode::Bvh).len())
+                .map(|pb| {
+                    a.intersecting_pairs(black_box(pb), cga_collide::query::Mode::Bvh)
+                        .len()
+                })
                 .sum::<usize>()
         })
     });

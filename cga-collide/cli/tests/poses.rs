@@ -39,8 +39,20 @@ fn poses_match_single_placements() {
         .iter()
         .map(|(r, t)| format!("{} {} {} {} {} {}\n", r[0], r[1], r[2], t[0], t[1], t[2]))
         .collect();
-    std::fs::write(dir.join("poses.txt"), format!("# rx ry rz tx ty tz\n{text}")).unwrap();
-    let base = ["collide", "bunny", "bunny", "--unit", "--poses", "poses.txt", "--json"];
+    std::fs::write(
+        dir.join("poses.txt"),
+        format!("# rx ry rz tx ty tz\n{text}"),
+    )
+    .unwrap();
+    let base = [
+        "collide",
+        "bunny",
+        "bunny",
+        "--unit",
+        "--poses",
+        "poses.txt",
+        "--json",
+    ];
     let mut with_pairs = base.to_vec();
     with_pairs.extend(["--all-pairs", "--threads", "2"]);
     let all = json(&cga(&with_pairs, &dir));
@@ -54,8 +66,17 @@ fn poses_match_single_placements() {
         let translate = t.join(",");
         let one = json(&cga(
             &[
-                "collide", "bunny", "bunny", "--unit", "--rotate", &rotate, "--translate",
-                &translate, "--json", "--repeat", "1",
+                "collide",
+                "bunny",
+                "bunny",
+                "--unit",
+                "--rotate",
+                &rotate,
+                "--translate",
+                &translate,
+                "--json",
+                "--repeat",
+                "1",
             ],
             &dir,
         ));
@@ -73,11 +94,25 @@ fn bad_poses_files_are_errors() {
     let out = cga(&["collide", "bunny", "bunny", "--poses", "short.txt"], &dir);
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("short.txt:1") && err.contains("6 numbers"), "{err}");
-    let out = cga(&["collide", "bunny", "bunny", "--poses", "missing.txt"], &dir);
+    assert!(
+        err.contains("short.txt:1") && err.contains("6 numbers"),
+        "{err}"
+    );
+    let out = cga(
+        &["collide", "bunny", "bunny", "--poses", "missing.txt"],
+        &dir,
+    );
     assert!(!out.status.success());
     let out = cga(
-        &["collide", "bunny", "bunny", "--poses", "short.txt", "--rotate", "1,2,3"],
+        &[
+            "collide",
+            "bunny",
+            "bunny",
+            "--poses",
+            "short.txt",
+            "--rotate",
+            "1,2,3",
+        ],
         &dir,
     );
     assert!(!out.status.success(), "--poses and --rotate conflict");
