@@ -180,9 +180,9 @@ impl PoseMap {
 #[inline(always)]
 fn row_range(m: &[f64; 3], t: f64, b: &Aabb) -> (f64, f64) {
     let (mut lo, mut hi) = (t, t);
-    for j in 0..3 {
-        let p = m[j] * b.min[j];
-        let q = m[j] * b.max[j];
+    for ((&mj, &x), &y) in m.iter().zip(&b.min).zip(&b.max) {
+        let p = mj * x;
+        let q = mj * y;
         if p <= q {
             lo += p;
             hi += q;
