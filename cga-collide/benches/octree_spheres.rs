@@ -1,6 +1,6 @@
-//! Octree sphere trees (seed paper `003`): build time per depth, and one collision query on the
+//! Octree sphere trees (Fuentes Socorro's method): build time per depth, and one collision query on the
 //! `cga` main job's placement (bunny00 vs armadillo, `--unit`, armadillo moved by
-//! `(0.3, 0.05, 0)`) by the seed's method and the simultaneous descent, with the exact BVH
+//! `(0.3, 0.05, 0)`) by the paper's method and the simultaneous descent, with the exact BVH
 //! query (`Collider::collides_solid`) as the baseline in the same run; plus a near miss (the
 //! solids do not collide, the depth-5 trees do: a false positive of the approximation).
 //!
@@ -47,16 +47,16 @@ fn queries(c: &mut Criterion) {
         let pb = b.placed(&iso).expect("placed");
         let mb = tb.transformed(&iso);
         eprintln!(
-            "{name}: exact {}, seed {}, simultaneous {}",
+            "{name}: exact {}, paper {}, simultaneous {}",
             a.collides_solid(&pb, Mode::Bvh),
-            collide::seed(&ta, &mb).collides,
+            collide::paper_method(&ta, &mb).collides,
             collide::simultaneous(&ta, &mb).collides
         );
         g.bench_function(format!("{name}/exact_bvh_baseline"), |bch| {
             bch.iter(|| black_box(a.collides_solid(&pb, Mode::Bvh)))
         });
-        g.bench_function(format!("{name}/seed"), |bch| {
-            bch.iter(|| black_box(collide::seed(&ta, &mb).collides))
+        g.bench_function(format!("{name}/paper"), |bch| {
+            bch.iter(|| black_box(collide::paper_method(&ta, &mb).collides))
         });
         g.bench_function(format!("{name}/simultaneous"), |bch| {
             bch.iter(|| black_box(collide::simultaneous(&ta, &mb).collides))

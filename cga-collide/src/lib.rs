@@ -47,3 +47,8 @@ pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
 
 pub use ga_core;
 pub use nalgebra;
+
+/// The repository README's Rust snippets, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;

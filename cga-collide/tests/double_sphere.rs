@@ -1,4 +1,4 @@
-//! The double-sphere tree of the seed paper 000: Table 1's polyhedra, the tree's invariants and
+//! The double-sphere tree of the double-sphere paper: Table 1's polyhedra, the tree's invariants and
 //! the exactness of `collide` against an independent brute force.
 
 use std::sync::OnceLock;

@@ -1,6 +1,6 @@
-//! Collision of sphere trees: the seed's method, the simultaneous descent and every leaf pair
+//! Collision of sphere trees: the paper's method, the simultaneous descent and every leaf pair
 //! agree on nested trees (random sphere sets and octree trees of meshes in random placements);
-//! octree trees have no false negatives against the exact solids; the seed's C++ as written
+//! octree trees have no false negatives against the exact solids; the paper's C++ as written
 //! misses a collision.
 #![allow(clippy::needless_range_loop)]
 
@@ -32,7 +32,7 @@ fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
 
 fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
     let reference = collide::brute_force(x, y).collides;
-    let s = collide::seed(x, y);
+    let s = collide::paper_method(x, y);
     let m = collide::simultaneous(x, y);
     prop_assert_eq!(s.collides, reference);
     prop_assert_eq!(m.collides, reference);
@@ -41,13 +41,13 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
         if let Some((i, j)) = r.witness {
             let (a, b) = (x.node(i), y.node(j));
             prop_assert!(a.is_leaf() && b.is_leaf());
-            prop_assert!(cga_collide::hierarchy::sphere_tree::balls_meet(
+            prop_assert!(cga_collide::exact::balls_meet(
                 &a.centre, a.radius, &b.centre, b.radius
             ));
         }
     }
-    // The seed as written never claims a collision that is not there.
-    prop_assert!(!collide::seed_as_written(x, y).collides || reference);
+    // The paper's method as published never claims a collision that is not there.
+    prop_assert!(!collide::paper_method_as_published(x, y).collides || reference);
     Ok(reference)
 }
 
@@ -65,7 +65,7 @@ proptest! {
 }
 
 #[test]
-fn seed_as_written_misses_a_collision() {
+fn paper_method_as_published_misses_a_collision() {
     // Y: a root with two children; the first child's ball meets X's leaf but its own leaf does
     // not; the second child's leaf does. The C++ follows only the first meeting child.
     let leaf = |x: f64, r: f64| NestedNode::leaf([x, 0.0, 0.0], r, CellState::Partial);
@@ -92,9 +92,9 @@ fn seed_as_written_misses_a_collision() {
     assert!(y.nesting_violations().is_empty());
     let x = SphereTree::single([1.5, 0.0, 0.0], 1.0, CellState::Full).unwrap();
     assert!(collide::brute_force(&x, &y).collides);
-    assert!(collide::seed(&x, &y).collides);
+    assert!(collide::paper_method(&x, &y).collides);
     assert!(collide::simultaneous(&x, &y).collides);
-    assert!(!collide::seed_as_written(&x, &y).collides);
+    assert!(!collide::paper_method_as_published(&x, &y).collides);
 }
 
 /// A closed, outward-oriented cube mesh.
@@ -257,7 +257,7 @@ proptest! {
         wiggle in -4i64..=4,
         scale in prop::sample::select(vec![1e-300, 1e-160, 1e-10, 1.0, 1e10, 1e150, 1e300]),
     ) {
-        use cga_collide::hierarchy::sphere_tree::{balls_meet, balls_meet_exact};
+        use cga_collide::exact::{balls_meet, balls_meet_exact};
         let n = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt().max(1e-3);
         // Centre 2 at distance r1 + r2 (tangent up to rounding), nudged by a few ulps.
         let d = (r1 + r2) * (1.0 + wiggle as f64 * f64::EPSILON);
@@ -276,7 +276,7 @@ proptest! {
 
 #[test]
 fn ball_filter_exact_cases() {
-    use cga_collide::hierarchy::sphere_tree::{balls_meet, balls_meet_exact};
+    use cga_collide::exact::{balls_meet, balls_meet_exact};
     // Integer tangency (3-4-5), just apart, just overlapping, coincident points.
     let cases = [
         ([0.0, 0.0, 0.0], 2.0, [3.0, 4.0, 0.0], 3.0, true),

@@ -8,6 +8,7 @@ extern crate self as ga_core;
 
 pub mod cga;
 pub mod format;
+pub mod inverse;
 pub mod linalg;
 pub mod ops;
 pub mod pga3;

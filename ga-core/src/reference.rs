@@ -26,7 +26,7 @@
 //!
 //! # Canonical order
 //!
-//! Dense storage is indexed by bitmask. The *canonical* order of DESIGN.md (by grade, then
+//! Dense storage is indexed by bitmask. The *canonical* order of `docs/conventions.md` (by grade, then
 //! lexicographic on the ascending index lists) is computed by [`canonical_order`] and used by
 //! [`DenseMultivector::from_canonical`], [`DenseMultivector::to_canonical`] and
 //! [`canonical_blade_names`].
@@ -66,8 +66,9 @@ use std::sync::Arc;
 
 use crate::scalar::{Field, Real, Ring};
 
-/// The largest number of generators the reference supports.
-pub const MAX_GENERATORS: usize = 6;
+/// The largest number of generators the reference supports: 10 (1024 blades, so a product
+/// visits about a million blade pairs; enough for double conformal Cl(8,2)).
+pub const MAX_GENERATORS: usize = 10;
 
 /// What went wrong when building reference multivectors.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -150,8 +151,8 @@ impl Signature {
     /// `p` entries `+1`, then `q` entries `-1`, then `r` entries `0` (Cl(p,q,r)).
     pub fn pqr(p: usize, q: usize, r: usize) -> Result<Self, ReferenceError> {
         let mut v = vec![1i8; p];
-        v.extend(std::iter::repeat(-1).take(q));
-        v.extend(std::iter::repeat(0).take(r));
+        v.extend(std::iter::repeat_n(-1, q));
+        v.extend(std::iter::repeat_n(0, r));
         Self::new(&v)
     }
 

@@ -60,6 +60,13 @@ pub trait Field: Ring + Div<Output = Self> {
             1.0
         }
     }
+    /// The unit roundoff `u` of the arithmetic (a bound on the relative error of one operation):
+    /// `0.0` for exact types (the default), half the machine epsilon for floats. Checks of
+    /// computed results (such as `inverse()` of the generated types) allow rounding errors of
+    /// this size; with `0.0` they demand exact equality.
+    fn unit_roundoff() -> f64 {
+        0.0
+    }
 }
 
 /// An ordered [`Field`] approximating (or exactly representing part of) the real numbers.
@@ -105,6 +112,10 @@ macro_rules! impl_float {
             #[inline]
             fn pivot_score(&self) -> f64 {
                 <$t>::abs(*self) as f64
+            }
+            #[inline]
+            fn unit_roundoff() -> f64 {
+                (<$t>::EPSILON / 2.0) as f64
             }
         }
         impl Real for $t {

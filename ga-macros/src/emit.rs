@@ -7,16 +7,21 @@ use proc_macro2::{Ident, Literal, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::blade::{self, Blade};
-use crate::model::{Algebra, Output, Product, Term, TypeModel};
+use crate::model::{Algebra, BladeSet, Output, Product, Term, TypeModel, PRODUCTS};
 
 /// Everything the declaration expands to.
 pub fn emit(alg: &Algebra) -> TokenStream {
     let mut items = vec![emit_module_items(alg)];
-    for (i, t) in alg.types.iter().enumerate() {
-        items.push(emit_type(alg, i, t));
+    let emitted: Vec<usize> = (0..alg.types.len())
+        .filter(|&i| alg.types[i].emitted)
+        .collect();
+    for &i in &emitted {
+        items.push(emit_type(alg, i, &alg.types[i]));
     }
-    for a in 0..alg.types.len() {
-        for b in 0..alg.types.len() {
+    // Only pairs of generated types; an operation whose result no generated type holds is
+    // skipped (possible only without a dense type).
+    for &a in &emitted {
+        for &b in &emitted {
             items.push(emit_pair(alg, a, b));
         }
     }
@@ -130,7 +135,10 @@ fn emit_module_items(alg: &Algebra) -> TokenStream {
     let sig_doc = format!("Squares of the generators of `{label}`, in basis order.");
     let ring = ring();
     let blade_fns = alg.canonical.iter().skip(1).map(|&b| {
-        let out = alg.resolve(1u64 << b);
+        let out = alg.resolve(BladeSet::single(b));
+        if !alg.is_emitted(out) {
+            return TokenStream::new();
+        }
         let ty = out_ty(alg, out);
         let name = format_ident!("{}", alg.field_names[b as usize]);
         let mut exprs = BTreeMap::new();
@@ -197,6 +205,9 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
 
     let blade_map_fn = |fname: Ident, doc: &str, f: &dyn Fn(Blade) -> (i32, Blade)| {
         let map = alg.blade_map(&t.blades, f);
+        if !alg.is_emitted(map.output) {
+            return TokenStream::new();
+        }
         let ty = out_ty(alg, map.output);
         let exprs = map
             .entries
@@ -232,7 +243,26 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
     let undual = blade_map_fn(format_ident!("undual"), undual_doc, &|b| {
         alg.undual_blade(b)
     });
-    let dual_ty = out_ty(alg, alg.blade_map(&t.blades, |b| alg.dual_blade(b)).output);
+    let dual_out = alg.blade_map(&t.blades, |b| alg.dual_blade(b)).output;
+    let dual_ty = out_ty(alg, dual_out);
+    let not_impls = if alg.is_emitted(dual_out) {
+        quote! {
+            impl<T: #ring> ::core::ops::Not for #name<T> {
+                type Output = #dual_ty;
+                /// The dual.
+                #[inline]
+                fn not(self) -> #dual_ty { self.dual() }
+            }
+            impl<T: #ring> ::core::ops::Not for &#name<T> {
+                type Output = #dual_ty;
+                /// The dual.
+                #[inline]
+                fn not(self) -> #dual_ty { self.dual() }
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
 
     let grades = t.blades.iter().map(|&b| {
         let fi = field_ident(alg, b);
@@ -253,6 +283,12 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         signed_sum(norm_terms)
     };
 
+    let masks: Vec<Literal> = t
+        .blades
+        .iter()
+        .map(|&b| Literal::u32_unsuffixed(b))
+        .collect();
+    let inverse_doc = inverse_doc(t);
     let dense_items = if t.is_dense {
         let coeffs: Vec<Ident> = (0..count).map(|i| format_ident!("c{i}")).collect();
         quote! {
@@ -277,24 +313,21 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
                 }
             }
             impl<T: ::ga_core::scalar::Field> #name<T> {
-                /// The inverse of a general multivector (not only versors), by exact Gaussian
-                /// elimination on its left-multiplication matrix; `None` when it is singular.
-                /// Slow compared with [`inverse`](Self::inverse); exact for exact scalars.
+                /// The unchecked solution of `A X = 1` by Gaussian elimination on the
+                /// left-multiplication matrix (partial pivoting by `Field::pivot_score`); `None`
+                /// when a pivot is exactly zero. Exact for exact scalars; for floats a nearly
+                /// singular `A` gives an inaccurate result: prefer [`inverse`](Self::inverse),
+                /// which checks its answer.
                 pub fn general_inverse(&self) -> Option<Self> {
-                    let columns: ::std::vec::Vec<[T; #count]> = (0..#count)
-                        .map(|j| {
-                            let mut e: [T; #count] = ::core::array::from_fn(|_| #zero);
-                            e[j] = <T as #ring>::one();
-                            let basis = Self::from_coefficients(e);
-                            ::ga_core::ops::Geometric::geometric(self, &basis).into_coefficients()
-                        })
-                        .collect();
-                    let solution = ::ga_core::linalg::solve_columns(&columns, 0)?;
+                    let span: [u32; #count] = [#(#masks),*];
+                    let solution = ::ga_core::inverse::solve(&SIGNATURE, &span, &self.coefficients(), &span)?;
                     let array: [T; #count] = solution.try_into().ok()?;
                     Some(Self::from_coefficients(array))
                 }
             }
         }
+    } else if !alg.types[alg.dense()].emitted {
+        TokenStream::new()
     } else {
         let dense = &alg.types[alg.dense()].name;
         quote! {
@@ -317,7 +350,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         }
     };
     let subset_conversions = alg.types.iter().enumerate().filter_map(|(j, other)| {
-        if j == index || other.is_dense || t.set & other.set != t.set {
+        if j == index || other.is_dense || !t.set.is_subset_of(&other.set) {
             return None;
         }
         let oname = &other.name;
@@ -351,10 +384,13 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         .iter()
         .map(|f| quote!(self.#f.ulps_eq(&other.#f, epsilon.clone(), max_ulps)));
 
+    let struct_attributes = &alg.struct_attributes;
     quote! {
         #(#attrs)*
         #[doc = #auto_doc]
         #[derive(Clone, Copy, PartialEq, Eq, Hash)]
+        #[repr(C)]
+        #(#struct_attributes)*
         pub struct #name<T> {
             #(#[doc = #field_docs] pub #fields: T,)*
         }
@@ -403,13 +439,21 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
         }
 
         impl<T: ::ga_core::scalar::Field> #name<T> {
-            /// The versor inverse `Ã / ⟨A Ã⟩₀`: exact for blades and versors; `None` when
-            /// `⟨A Ã⟩₀` is zero. For general multivectors use the dense type's
-            /// `general_inverse`.
+            /// The versor inverse `Ã / ⟨A Ã⟩₀`, `None` when `⟨A Ã⟩₀` is zero. Precondition: `A`
+            /// is a versor (a product of invertible vectors) or a blade; then this is its
+            /// inverse. For any other `A` the result is not an inverse: use
+            /// [`inverse`](Self::inverse), which checks.
             #[inline]
-            pub fn inverse(&self) -> Option<Self> {
+            pub fn versor_inverse(&self) -> Option<Self> {
                 let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
                 Some(self.reverse().scale(&inv))
+            }
+            #[doc = #inverse_doc]
+            pub fn inverse(&self) -> Option<Self> {
+                let x = [#(self.#fields.clone()),*];
+                let [#(#fields),*]: [T; #count] =
+                    ::ga_core::inverse::inverse(&SIGNATURE, &[#(#masks),*], &x)?.try_into().ok()?;
+                Some(#name { #(#fields),* })
             }
         }
 
@@ -428,18 +472,7 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
             #[inline]
             fn neg(self) -> #name<T> { #name { #(#fields: -self.#fields.clone()),* } }
         }
-        impl<T: #ring> ::core::ops::Not for #name<T> {
-            type Output = #dual_ty;
-            /// The dual.
-            #[inline]
-            fn not(self) -> #dual_ty { self.dual() }
-        }
-        impl<T: #ring> ::core::ops::Not for &#name<T> {
-            type Output = #dual_ty;
-            /// The dual.
-            #[inline]
-            fn not(self) -> #dual_ty { self.dual() }
-        }
+        #not_impls
         impl<T: #ring> ::core::ops::Mul<T> for #name<T> {
             type Output = Self;
             #[inline]
@@ -501,6 +534,34 @@ fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStream {
     }
 }
 
+/// The documentation of `inverse()`: what `None` means depends on whether the type is closed
+/// under the geometric product.
+fn inverse_doc(t: &TypeModel) -> String {
+    let masks: Vec<Blade> = t.blades.clone();
+    let mut span = vec![0 as Blade];
+    for &m in &masks {
+        if !span.contains(&m) {
+            let more: Vec<Blade> = span.iter().map(|s| s ^ m).collect();
+            span.extend(more);
+        }
+    }
+    let closed = span.iter().all(|b| t.contains(*b));
+    let none = if closed {
+        "`None` when `A` has no inverse"
+    } else {
+        "`None` when `A` has no inverse, or when its inverse has blades outside this type (the \
+         type is not closed under the geometric product: convert to a larger type first)"
+    };
+    format!(
+        "The inverse `A⁻¹` with `A A⁻¹ = A⁻¹ A = 1`, checked: {none}. For floats, `Some` means \
+         the products equal 1 up to the rounding error of computing them (see \
+         `ga_core::inverse` for the exact tolerance), and non-finite input gives `None`. Tries \
+         the versor formula first (see [`versor_inverse`](Self::versor_inverse)), then Gaussian \
+         elimination; slower than `versor_inverse`, which is enough when `A` is known to be a \
+         versor."
+    )
+}
+
 /// Products, sums and sandwiches of one ordered pair of types.
 fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let ring = ring();
@@ -509,8 +570,11 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
     let lhs = quote!(self);
     let rhs = quote!(rhs);
     let mut items = Vec::new();
-    for kind in Product::ALL {
-        let model = alg.bilinear(kind, &ta.blades, &tb.blades);
+    for spec in &PRODUCTS {
+        let model = alg.bilinear(spec.kind, &ta.blades, &tb.blades);
+        if !alg.is_emitted(model.output) {
+            continue;
+        }
         let ty = out_ty(alg, model.output);
         let body = bilinear_body(
             alg,
@@ -519,18 +583,17 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
             (&lhs, Output::Type(a)),
             (&rhs, Output::Type(b)),
         );
-        let (trait_name, method) = match kind {
-            Product::Geometric => ("Geometric", "geometric"),
-            Product::Wedge => ("Wedge", "wedge"),
-            Product::LeftContraction => ("LeftContraction", "left_contraction"),
-            Product::RightContraction => ("RightContraction", "right_contraction"),
-            Product::ScalarProduct => ("ScalarProduct", "scalar_product"),
-            Product::Regressive => ("Regressive", "regressive"),
-        };
-        let trait_ident = format_ident!("{trait_name}");
-        let method = format_ident!("{method}");
+        let trait_ident = format_ident!("{}", spec.trait_name);
+        let method = format_ident!("{}", spec.method);
         let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
-        let doc = format!("{terms} multiplications.");
+        let out_name = match model.output {
+            Output::Scalar => "scalar".to_string(),
+            Output::Type(i) => alg.types[i].name.to_string(),
+        };
+        let doc = format!(
+            "{} `{an} {} {bn} → {out_name}`, {terms} multiplications.",
+            spec.title, spec.symbol
+        );
         items.push(quote! {
             impl<T: #ring> ::ga_core::ops::#trait_ident<#bn<T>> for #an<T> {
                 type Output = #ty;
@@ -539,19 +602,19 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 fn #method(&self, rhs: &#bn<T>) -> #ty { #body }
             }
         });
-        let op = match kind {
-            Product::Geometric => Some(("Mul", "mul")),
-            Product::Wedge => Some(("BitXor", "bitxor")),
-            Product::LeftContraction => Some(("BitOr", "bitor")),
-            Product::Regressive => Some(("BitAnd", "bitand")),
-            _ => None,
-        };
-        if let Some((op_trait, op_method)) = op {
+        if let Some((op_trait, op_method, op_symbol)) = spec.operator {
             let op_trait = format_ident!("{op_trait}");
             let op_method = format_ident!("{op_method}");
+            let op_doc = format!(
+                "`{an} {op_symbol} {bn}`: the {} (`{an} {} {bn} → {out_name}`, {terms} \
+                 multiplications).",
+                spec.title.to_lowercase(),
+                spec.symbol
+            );
             items.push(quote! {
                 impl<T: #ring> ::core::ops::#op_trait<#bn<T>> for #an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: #bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(&self, &rhs)
@@ -559,6 +622,7 @@ fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
                 }
                 impl<T: #ring> ::core::ops::#op_trait<&#bn<T>> for &#an<T> {
                     type Output = #ty;
+                    #[doc = #op_doc]
                     #[inline]
                     fn #op_method(self, rhs: &#bn<T>) -> #ty {
                         ::ga_core::ops::#trait_ident::#method(self, rhs)
@@ -577,7 +641,7 @@ fn emit_sum(alg: &Algebra, a: usize, b: usize, subtract: bool) -> TokenStream {
     let ring = ring();
     let (ta, tb) = (&alg.types[a], &alg.types[b]);
     let (an, bn) = (&ta.name, &tb.name);
-    let out = alg.resolve(ta.set | tb.set);
+    let out = alg.resolve(ta.set.union(&tb.set));
     // Sums of non-scalar types never resolve to `T`; a scalar-only pair cannot be declared
     // without a blade list `[1]`, which resolves to the declared type too.
     let out = match out {
@@ -588,6 +652,9 @@ fn emit_sum(alg: &Algebra, a: usize, b: usize, subtract: bool) -> TokenStream {
         }),
         o => o,
     };
+    if !alg.is_emitted(out) {
+        return TokenStream::new();
+    }
     let ty = out_ty(alg, out);
     let make = |owned: bool| {
         let exprs = alg
@@ -645,6 +712,9 @@ fn emit_sandwich(alg: &Algebra, v: usize, x: usize) -> TokenStream {
     let (tv, tx) = (&alg.types[v], &alg.types[x]);
     let (vn, xn) = (&tv.name, &tx.name);
     let first = alg.bilinear(Product::Geometric, &tv.blades, &tx.blades);
+    if !alg.is_emitted(first.output) {
+        return TokenStream::new();
+    }
     let p_blades: Vec<Blade> = first.outputs.iter().map(|(b, _)| *b).collect();
     let outputs = alg.sandwich_terms(&p_blades, &tv.blades, &tx.blades);
     let p = quote!(p);

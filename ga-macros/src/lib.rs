@@ -21,12 +21,17 @@
 //!
 //! The declaration: `name` (a label for docs), `signature` (`+1`, `-1` or `0` per generator,
 //! at most 6), optional `basis` names (default `e1 ... en`), `types` (each by `grade K`,
-//! `grades K L ...` or an explicit blade list `[1, e12, e13]`), and optional `dense` (the name
-//! of the all-blades type, default `Multivector`). See the crate README for what is generated.
+//! `grades K L ...` or an explicit blade list `[1, e12, e13]`), optional `dense` (the name
+//! of the all-blades type, default `Multivector`), and optional `attributes: [#[...], ...]`:
+//! outer attributes forwarded onto every generated struct (each struct is `#[repr(C)]`, its
+//! fields the coefficients in canonical blade order), e.g.
+//! `attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]]`.
+//! See `docs/generator.md` in the repository for what is generated.
 #![forbid(unsafe_code)]
 
 mod blade;
 mod emit;
+mod errors;
 mod model;
 mod parse;
 

@@ -5,10 +5,11 @@ use proc_macro2::Span;
 use syn::parse::{Parse, ParseStream};
 use syn::{braced, bracketed, Attribute, Ident, LitInt, Token};
 
-/// One signature entry with its span: the square of a generator, `+1`, `-1` or `0`.
+use crate::errors::Errors;
+
+/// One signature entry: the square of a generator, `+1`, `-1` or `0`.
 pub struct SignatureEntry {
     pub value: i32,
-    pub span: Span,
 }
 
 /// Which blades a declared type holds.
@@ -36,6 +37,11 @@ pub struct Declaration {
     pub types: Vec<TypeDecl>,
     pub types_span: Span,
     pub dense: Option<Ident>,
+    /// `attributes: [#[...], ...]`: outer attributes put on every generated struct.
+    pub attributes: Vec<Attribute>,
+    /// Errors found while parsing that do not stop the model's checks (an unknown or repeated
+    /// key): the model reports them together with its own.
+    pub errors: Errors,
 }
 
 impl Parse for Declaration {
@@ -45,57 +51,74 @@ impl Parse for Declaration {
         let mut basis = None;
         let mut types = None;
         let mut dense = None;
+        let mut attributes: Option<Vec<Attribute>> = None;
+        // Every error found is reported, not only the first (syntax errors still stop parsing).
+        let mut errors = Errors::default();
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
             input.parse::<Token![:]>()?;
             let key_str = key.to_string();
-            let duplicate = || syn::Error::new(key.span(), format!("`{key_str}` is given twice"));
+            let given = matches!(
+                (
+                    key_str.as_str(),
+                    &name,
+                    &signature,
+                    &basis,
+                    &types,
+                    &dense,
+                    &attributes
+                ),
+                ("name", Some(_), ..)
+                    | ("signature", _, Some(_), ..)
+                    | ("basis", _, _, Some(_), ..)
+                    | ("types", _, _, _, Some(_), ..)
+                    | ("dense", _, _, _, _, Some(_), _)
+                    | ("attributes", .., Some(_))
+            );
+            if given {
+                errors.push(syn::Error::new(
+                    key.span(),
+                    format!("`{key_str}` is given twice"),
+                ));
+            }
             match key_str.as_str() {
                 "name" => {
-                    if name.is_some() {
-                        return Err(duplicate());
-                    }
                     name = Some(input.parse::<Ident>()?);
                 }
                 "signature" => {
-                    if signature.is_some() {
-                        return Err(duplicate());
-                    }
-                    signature = Some((parse_signature(input)?, key.span()));
+                    signature = Some((parse_signature(input, &mut errors)?, key.span()));
                 }
                 "basis" => {
-                    if basis.is_some() {
-                        return Err(duplicate());
-                    }
                     let content;
                     bracketed!(content in input);
                     let idents = content.parse_terminated(Ident::parse, Token![,])?;
                     basis = Some((idents.into_iter().collect::<Vec<_>>(), key.span()));
                 }
                 "types" => {
-                    if types.is_some() {
-                        return Err(duplicate());
-                    }
                     let content;
                     braced!(content in input);
                     let decls = content.parse_terminated(TypeDecl::parse, Token![,])?;
                     types = Some((decls.into_iter().collect::<Vec<_>>(), key.span()));
                 }
                 "dense" => {
-                    if dense.is_some() {
-                        return Err(duplicate());
-                    }
                     dense = Some(input.parse::<Ident>()?);
                 }
+                "attributes" => {
+                    attributes = Some(parse_attributes(input)?);
+                }
                 other => {
-                    return Err(syn::Error::new(
+                    errors.push(syn::Error::new(
                         key.span(),
                         format!(
                             "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
-                             `types`, `dense`"
+                             `types`, `dense`, `attributes`"
                         ),
-                    ))
+                    ));
+                    // Skip its value and go on checking the rest.
+                    while !input.is_empty() && !input.peek(Token![,]) {
+                        input.parse::<proc_macro2::TokenTree>()?;
+                    }
                 }
             }
             if !input.is_empty() {
@@ -105,11 +128,23 @@ impl Parse for Declaration {
         let missing = |what: &str, example: &str| {
             syn::Error::new(start, format!("missing `{what}`, e.g. `{what}: {example}`"))
         };
-        let name = name.ok_or_else(|| missing("name", "cga"))?;
-        let (signature, signature_span) =
-            signature.ok_or_else(|| missing("signature", "[+1, +1, +1, +1, -1]"))?;
-        let (types, types_span) =
-            types.ok_or_else(|| missing("types", "{ Vector: grade 1, Even: grades 0 2 }"))?;
+        if name.is_none() {
+            errors.push(missing("name", "cga"));
+        }
+        if signature.is_none() {
+            errors.push(missing("signature", "[+1, +1, +1, +1, -1]"));
+        }
+        if types.is_none() {
+            errors.push(missing("types", "{ Vector: grade 1, Even: grades 0 2 }"));
+        }
+        if name.is_none() || signature.is_none() || types.is_none() {
+            errors.finish()?;
+        }
+        let (Some(name), Some((signature, signature_span)), Some((types, types_span))) =
+            (name, signature, types)
+        else {
+            return Err(missing("name", "cga")); // unreachable: reported above
+        };
         let (basis, basis_span) = match basis {
             Some((b, s)) => (Some(b), s),
             None => (None, signature_span),
@@ -123,17 +158,37 @@ impl Parse for Declaration {
             types,
             types_span,
             dense,
+            attributes: attributes.unwrap_or_default(),
+            errors,
         })
     }
 }
 
-fn parse_signature(input: ParseStream) -> syn::Result<Vec<SignatureEntry>> {
+/// `[#[a], #[b], ...]`: outer attributes, commas between them optional.
+fn parse_attributes(input: ParseStream) -> syn::Result<Vec<Attribute>> {
+    let content;
+    bracketed!(content in input);
+    let mut attrs = Vec::new();
+    while !content.is_empty() {
+        if !content.peek(Token![#]) {
+            return Err(content.error(
+                "expected an outer attribute such as `#[derive(Debug)]` (attributes: [#[...], ...])",
+            ));
+        }
+        attrs.extend(content.call(Attribute::parse_outer)?);
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
+    }
+    Ok(attrs)
+}
+
+fn parse_signature(input: ParseStream, errors: &mut Errors) -> syn::Result<Vec<SignatureEntry>> {
     let content;
     bracketed!(content in input);
     let mut entries = Vec::new();
     while !content.is_empty() {
         let mut sign = 1;
-        let span = content.span();
         if content.peek(Token![-]) {
             content.parse::<Token![-]>()?;
             sign = -1;
@@ -148,7 +203,7 @@ fn parse_signature(input: ParseStream) -> syn::Result<Vec<SignatureEntry>> {
         })?;
         let value: i32 = lit.base10_parse()?;
         if value > 1 {
-            return Err(syn::Error::new(
+            errors.push(syn::Error::new(
                 lit.span(),
                 format!(
                     "signature entry `{value}` is not allowed: a generator squares to `+1`, `-1` \
@@ -158,7 +213,6 @@ fn parse_signature(input: ParseStream) -> syn::Result<Vec<SignatureEntry>> {
         }
         entries.push(SignatureEntry {
             value: sign * value,
-            span: lit.span().join(span).unwrap_or(lit.span()),
         });
         if !content.is_empty() {
             content.parse::<Token![,]>()?;

@@ -1,5 +1,5 @@
 //! The three hierarchies on the double-sphere paper's workloads: the double outer/inner sphere
-//! tree (seed 000), the octree sphere tree (seed 003) and the general BVH of the mesh module,
+//! tree (double-sphere paper), the octree sphere tree (Fuentes Socorro) and the general BVH of the mesh module,
 //! on the four polyhedra pairs at the two experiment-sphere sizes, with the same placements
 //! for all and every answer compared with the exact reference (`cga_collide::query::convex`).
 //!

@@ -1,7 +1,7 @@
-//! Octree sphere trees (seed paper `003`) against the exact BVH answer, on the `cga` main job's
+//! Octree sphere trees (Fuentes Socorro's method) against the exact BVH answer, on the `cga` main job's
 //! meshes (bunny00 vs armadillo, both `--unit`, armadillo moved by `--translate 0.3,0.05,0`)
 //! and on random rigid placements of the armadillo: build time and memory per depth, query
-//! time and ball–ball tests of the seed's method and of the simultaneous descent, and the
+//! time and ball–ball tests of the paper's method and of the simultaneous descent, and the
 //! sphere trees' false positives / negatives against `Collider::collides_solid`.
 //!
 //! Run: `cargo run --release -p cga-collide --example sphere_tree_compare [PLACEMENTS] [MAX_DEPTH]`
@@ -104,7 +104,7 @@ fn main() {
         ms(bvh_query) / isos.len() as f64,
     );
 
-    println!("| depth | nodes (bunny / armadillo) | leaves | build ms (bunny / armadillo) | bytes (both trees) | main placement: seed / simult. / exact | seed µs/query | simult. µs/query | seed ball tests/query | simult. ball tests/query | false positives | false negatives | seed as written: misses |");
+    println!("| depth | nodes (bunny / armadillo) | leaves | build ms (bunny / armadillo) | bytes (both trees) | main placement: paper / simult. / exact | paper µs/query | simult. µs/query | paper ball tests/query | simult. ball tests/query | false positives | false negatives | paper as published: misses |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for depth in 3..=max_depth {
         let t = Instant::now();
@@ -121,17 +121,17 @@ fn main() {
             let r: Vec<collide::CollisionResult> = moved.iter().map(|m| f(&ta, m)).collect();
             (t.elapsed(), r)
         };
-        let (seed_t, seed) = time(&collide::seed);
+        let (paper_t, paper) = time(&collide::paper_method);
         let (sim_t, sim) = time(&collide::simultaneous);
-        let (_, written) = time(&collide::seed_as_written);
+        let (_, written) = time(&collide::paper_method_as_published);
         let n = isos.len() as f64;
         let mut fp = 0;
         let mut fneg = 0;
         let mut misses = 0;
         for k in 0..isos.len() {
             assert_eq!(
-                seed[k].collides, sim[k].collides,
-                "seed and simultaneous disagree at placement {k}"
+                paper[k].collides, sim[k].collides,
+                "paper method and simultaneous descent disagree at placement {k}"
             );
             if k == 0 {
                 continue;
@@ -157,18 +157,18 @@ fn main() {
             ms(build_a),
             ms(build_b),
             ta.heap_bytes() + tb.heap_bytes(),
-            seed[0].collides,
+            paper[0].collides,
             sim[0].collides,
             exact[0],
-            seed_t.as_secs_f64() * 1e6 / n,
+            paper_t.as_secs_f64() * 1e6 / n,
             sim_t.as_secs_f64() * 1e6 / n,
-            tests(&seed),
+            tests(&paper),
             tests(&sim),
             placements - colliding,
             colliding,
         );
     }
     println!(
-        "\nFalse positives: placements where the trees collide but the solids do not (out of the non-colliding ones); false negatives: the reverse (out of the colliding ones; zero by construction). \"Seed as written\": colliding placements (by the fixed methods) where the seed's C++ as written (first meeting child only) answers no collision."
+        "\nFalse positives: placements where the trees collide but the solids do not (out of the non-colliding ones); false negatives: the reverse (out of the colliding ones; zero by construction). \"Paper as published\": colliding placements (by the fixed methods) where the paper's C++ as written (first meeting child only) answers no collision."
     );
 }

@@ -37,7 +37,7 @@ enum Command {
     Collide(CollideArgs),
     /// Which triangles of a mesh a segment, triangle, sphere or ball meets.
     Query(QueryArgs),
-    /// Octree sphere trees (seed paper 003): build from meshes, collide two from a file.
+    /// Octree sphere trees (Fuentes Socorro's method): build from meshes, collide two from a file.
     Spheretree(spheretree::SphereTreeArgs),
     /// Run an experiment of the papers (`cga experiment double-spheres`).
     Experiment(experiment_cmd::ExperimentArgs),

@@ -1,11 +1,11 @@
-//! `cga spheretree`: octree sphere trees (seed paper `003`) in the seed's text format.
+//! `cga spheretree`: octree sphere trees (Fuentes Socorro's method) in the paper's text format.
 //!
 //! * `cga spheretree build MESH [MESH...] --depth D -o FILE`: one tree per mesh, written in
-//!   the seed's format; `--rotate/--translate` move every mesh after the first (as `cga
+//!   the paper's format; `--rotate/--translate` move every mesh after the first (as `cga
 //!   collide` moves B), so `cga spheretree build bunny armadillo --unit --translate 0.3,0.05,0
 //!   --depth 5 -o pair.txt` makes a file `collide` can read.
 //! * `cga spheretree collide FILE`: whether the first two trees of the file collide, by the
-//!   seed's method, the simultaneous descent, or both (they must agree).
+//!   paper's method, the simultaneous descent, or both (they must agree).
 
 use std::fs;
 use std::path::PathBuf;
@@ -29,9 +29,9 @@ pub struct SphereTreeArgs {
 
 #[derive(Subcommand, Debug)]
 enum SphereTreeCommand {
-    /// Build one octree sphere tree per mesh and write them in the seed's text format.
+    /// Build one octree sphere tree per mesh and write them in the paper's text format.
     Build(BuildArgs),
-    /// Whether the first two trees of a file (the seed's format) collide.
+    /// Whether the first two trees of a file (the paper's format) collide.
     Collide(CollideArgs),
 }
 
@@ -66,20 +66,20 @@ struct BuildArgs {
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 enum Method {
-    /// The seed's method (roots, leaves of X against Y's root, then each against Y), with its
+    /// The paper's method (roots, leaves of X against Y's root, then each against Y), with its
     /// `Colision_Real` fixed to try every meeting child.
-    Seed,
-    /// The seed's C++ exactly as written (follows only the first meeting child: can miss).
-    SeedAsWritten,
+    Paper,
+    /// the paper's C++ exactly as written (follows only the first meeting child: can miss).
+    PaperAsPublished,
     /// Simultaneous descent, larger ball first.
     Simultaneous,
-    /// `seed` and `simultaneous`, checking that they agree.
+    /// `paper` and `simultaneous`, checking that they agree.
     Both,
 }
 
 #[derive(Args, Debug)]
 struct CollideArgs {
-    /// A file in the seed's format with at least two trees.
+    /// A file in the paper's format with at least two trees.
     file: PathBuf,
     /// Which traversal.
     #[arg(long, value_enum, default_value_t = Method::Both)]
@@ -200,14 +200,14 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         (r, t.elapsed().as_secs_f64() * 1e6)
     };
     let method_name = match args.method {
-        Method::Seed => "seed",
-        Method::SeedAsWritten => "seed-as-written",
+        Method::Paper => "paper",
+        Method::PaperAsPublished => "paper-as-published",
         Method::Simultaneous => "simultaneous",
         Method::Both => "both",
     };
     let single = match args.method {
-        Method::Seed => Some(timed(collide::seed)),
-        Method::SeedAsWritten => Some(timed(collide::seed_as_written)),
+        Method::Paper => Some(timed(collide::paper_method)),
+        Method::PaperAsPublished => Some(timed(collide::paper_method_as_published)),
         Method::Simultaneous => Some(timed(collide::simultaneous)),
         Method::Both => None,
     };
@@ -231,12 +231,12 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         }
         return Ok(());
     }
-    let (s, s_us) = timed(collide::seed);
+    let (s, s_us) = timed(collide::paper_method);
     let (m, m_us) = timed(collide::simultaneous);
     if s.collides != m.collides {
         // Possible only for trees whose child balls are not inside their parents.
         eprintln!(
-            "warning: the methods disagree (seed: {}, simultaneous: {}); {} + {} child balls stick out of their parents",
+            "warning: the methods disagree (paper: {}, simultaneous: {}); {} + {} child balls stick out of their parents",
             s.collides,
             m.collides,
             x.nesting_violations().len(),
@@ -256,13 +256,13 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
                 "method": "both",
                 "sphere_tests": s.sphere_tests + m.sphere_tests,
                 "nodes": nodes,
-                "seed": sj,
+                "paper": sj,
                 "simultaneous": mj,
             })
         );
     } else {
         println!(
-            "{} (seed: {} sphere tests, {s_us:.1} µs; simultaneous: {} sphere tests, {m_us:.1} µs)",
+            "{} (paper: {} sphere tests, {s_us:.1} µs; simultaneous: {} sphere tests, {m_us:.1} µs)",
             if s.collides {
                 "collide"
             } else {

@@ -196,8 +196,8 @@ fn spheretree_fixture(name: &str) -> String {
 fn spheretree_collide_gives_the_seeds_answers() {
     let dir = temp_dir("spheretree-seed");
     for (file, expected) in [
-        ("seed_no_collision.txt", false),
-        ("seed_collision.txt", true),
+        ("paper_no_collision.txt", false),
+        ("paper_collision.txt", true),
     ] {
         let path = spheretree_fixture(file);
         let both = json(&cga(&["spheretree", "collide", &path, "--json"], &dir));
@@ -205,7 +205,7 @@ fn spheretree_collide_gives_the_seeds_answers() {
         assert_eq!(both["collides"], expected);
         assert_eq!(both["agree"], true);
         assert_eq!(both["nodes"], serde_json::json!([41, 41]));
-        for method in ["seed", "simultaneous", "seed-as-written"] {
+        for method in ["paper", "simultaneous", "paper-as-published"] {
             let one = json(&cga(
                 &["spheretree", "collide", &path, "--json", "--method", method],
                 &dir,
@@ -220,7 +220,7 @@ fn spheretree_collide_gives_the_seeds_answers() {
         &[
             "spheretree",
             "collide",
-            &spheretree_fixture("seed_collision.raw.txt"),
+            &spheretree_fixture("paper_collision.raw.txt"),
         ],
         &dir,
     );

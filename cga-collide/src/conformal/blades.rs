@@ -2,12 +2,15 @@
 //! (the thesis's point embedding `F(x) = 2 up(x)`), checks of constructor inputs, and the
 //! extraction of Euclidean data (positions, centres, directions) from `f64` blades.
 
+use core::cmp::Ordering;
+
 use ga_core::cga::{Bivector, Multivector, Vector};
 use ga_core::prelude::*;
+use ga_core::scalar::Rational;
 use nalgebra::{Point3, Vector3};
 
 use crate::error::GeometryError;
-use crate::exact::CertifiedScalar;
+use crate::exact::{decide, CertifiedScalar, ErrF64};
 
 // ---------------------------------------------------------------------------------------------
 // Blades rebuilt in any certified scalar.
@@ -154,4 +157,33 @@ pub(crate) fn unit(v: Vector3<f64>) -> Vector3<f64> {
 
 pub(crate) fn euclidean_part(v: &Vector<f64>) -> Vector3<f64> {
     Vector3::new(v.e1, v.e2, v.e3)
+}
+
+/// A primitive whose inner (IPNS) form is a vector `V`: the point `x` lies on it iff
+/// `F(x) · V = 0` (planes and spheres).
+pub(crate) trait InnerVector {
+    /// The inner vector rebuilt exactly from the primitive's `f64` data, in `T`.
+    fn inner_vector<T: CertifiedScalar>(&self) -> Vector<T>;
+}
+
+/// Whether `x` lies on `primitive` (`F(x) · V = 0`), decided exactly: certified `f64` first,
+/// exact rationals if the sign is uncertain. Non-finite points lie on nothing.
+pub(crate) fn on_inner_vector<X: InnerVector>(primitive: &X, x: &Point3<f64>) -> bool {
+    if !x.iter().all(|c| c.is_finite()) {
+        return false;
+    }
+    let on = |sign: Option<Ordering>| sign.map(|s| s == Ordering::Equal);
+    decide(
+        || {
+            on(embed::<ErrF64>(x)
+                .scalar_product(&primitive.inner_vector())
+                .certain_sign())
+        },
+        || {
+            on(embed::<Rational>(x)
+                .scalar_product(&primitive.inner_vector())
+                .certain_sign())
+        },
+        false,
+    )
 }

@@ -2,7 +2,7 @@
 //! line–sphere, plane–plane, sphere–plane, sphere–sphere.
 //!
 //! Each function computes the meet in the inner (IPNS) forms, `M = dual(A) ∧ dual(B)`, which
-//! is the dual of the regressive product `A ∨ B` of the outer forms (DESIGN.md), and
+//! is the dual of the regressive product `A ∨ B` of the outer forms (`docs/conventions.md`), and
 //! classifies from the sign of its square `M² = ⟨M M⟩₀` (the thesis's `B²`) and from whether
 //! `M` vanishes:
 //!

@@ -15,7 +15,7 @@
 //!
 //! # Conventions
 //! * `n_inf = e4 + e5`, `n_0 = (e5 − e4)/2`, `dual(A) = A I⁻¹`, `undual(A) = A I`
-//!   (DESIGN.md). The IPNS form of every primitive is `dual` of its OPNS blade
+//!   (`docs/conventions.md`). The IPNS form of every primitive is `dual` of its OPNS blade
 //!   ([`Plane::ipns`], [`Sphere::ipns`], ...), and `undual` goes back.
 //! * Points are embedded at the thesis's scale `F(x) = 2x + |x|² n_inf − n̄ = 2 up(x)` (with
 //!   `n̄ = e4 − e5`). It needs no division, so every blade is a polynomial in the inputs and the

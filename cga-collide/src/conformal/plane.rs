@@ -1,7 +1,5 @@
 //! The plane.
 
-use core::cmp::Ordering;
-
 use ga_core::cga::{Quadvector, Vector};
 use ga_core::prelude::*;
 use ga_core::scalar::Rational;
@@ -135,7 +133,7 @@ impl Plane {
     pub fn ipns(&self) -> Vector<f64> {
         self.ipns_in()
     }
-    /// The unit normal (orientation: see the [module docs](self)).
+    /// The unit normal (orientation: see `Plane::from_points`).
     pub fn normal(&self) -> Vector3<f64> {
         unit(euclidean_part(&self.ipns()))
     }
@@ -148,25 +146,12 @@ impl Plane {
     }
     /// Whether `x` lies on the plane, `F(x) · dual(Π) = 0`, decided exactly.
     pub fn contains(&self, x: &Point3<f64>) -> bool {
-        if !x.iter().all(|c| c.is_finite()) {
-            return false;
-        }
-        decide(
-            || {
-                embed::<ErrF64>(x)
-                    .scalar_product(&self.ipns_in::<ErrF64>())
-                    .sign()
-                    .map(|s| s == Ordering::Equal)
-            },
-            || {
-                Some(
-                    embed::<Rational>(x)
-                        .scalar_product(&self.ipns_in::<Rational>())
-                        .certain_sign()
-                        == Some(Ordering::Equal),
-                )
-            },
-            false,
-        )
+        on_inner_vector(self, x)
+    }
+}
+
+impl InnerVector for Plane {
+    fn inner_vector<T: CertifiedScalar>(&self) -> Vector<T> {
+        self.ipns_in()
     }
 }

@@ -255,25 +255,12 @@ impl Sphere {
     }
     /// Whether `x` lies on the sphere, `F(x) · dual(S) = 0`, decided exactly.
     pub fn contains(&self, x: &Point3<f64>) -> bool {
-        if !x.iter().all(|c| c.is_finite()) {
-            return false;
-        }
-        decide(
-            || {
-                embed::<ErrF64>(x)
-                    .scalar_product(&self.ipns_in::<ErrF64>())
-                    .sign()
-                    .map(|s| s == Ordering::Equal)
-            },
-            || {
-                Some(
-                    embed::<Rational>(x)
-                        .scalar_product(&self.ipns_in::<Rational>())
-                        .certain_sign()
-                        == Some(Ordering::Equal),
-                )
-            },
-            false,
-        )
+        on_inner_vector(self, x)
+    }
+}
+
+impl InnerVector for Sphere {
+    fn inner_vector<T: CertifiedScalar>(&self) -> Vector<T> {
+        self.ipns_in()
     }
 }

@@ -14,16 +14,19 @@
 //! | [`predicates`] | every polynomial predicate of the crate (orientation, distances, spheres) |
 //! | [`Kernel`], [`ExactKernel`], [`FloatKernel`] | how the algorithms of [`crate::query`] decide signs: exactly, or in plain `f64` (for comparison) |
 //! | [`ExactPlane`] | a triangle's plane with its filter data, computed once per triangle |
+//! | [`balls_meet`], [`ball_inside`] | closed-ball tests on raw centres and radii, with a semi-static filter |
 //! | [`CertifiedScalar`], [`decide`] | the same staging for whole conformal computations ([`crate::conformal`]) |
 //!
 //! Nothing here depends on any other module of the crate.
 
+mod balls;
 mod bounded_f64;
 mod certified;
 mod kernel;
 pub mod predicates;
 mod sign;
 
+pub use balls::{ball_inside, balls_meet, balls_meet_exact};
 pub use bounded_f64::ErrF64;
 pub use certified::{all_zero, decide, CertifiedScalar};
 pub use kernel::{ExactKernel, ExactPlane, FloatKernel, FloatPlane, Kernel, PlaneSide};

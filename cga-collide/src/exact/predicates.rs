@@ -3,7 +3,7 @@
 //! [`ErrF64`](crate::exact::ErrF64) and on exact integers / rationals. The conformal vectors
 //! are the generated `ga_core::cga::Vector` with its generated scalar product.
 //!
-//! They are phrased in the conformal model (DESIGN.md): with the thesis's scaling
+//! They are phrased in the conformal model (`docs/conventions.md`): with the thesis's scaling
 //! `X = 2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` (no division, so it stays in a ring) and
 //! the sphere `S = 2·up(c) - r² n_inf`, the inner product gives `X·S = -2(|x - c|² - r²)`,
 //! `S·S = 4r²` and `S1·S2 = 2(r1² + r2² - |c1 - c2|²)`; the plane
@@ -248,5 +248,32 @@ impl Predicate<12> for Orient3dCga {
         let d = up2(&sub(&v3(x, 9), &a));
         let plane = o.wedge(&b).wedge(&c).wedge(&cga::n_inf::<R>());
         -plane.wedge(&d).e12345
+    }
+}
+
+/// `(r2 - r1)^2 - |c1 - c2|^2`, inputs `[c1, r1, c2, r2]`: with `r2 >= r1` the ball 1 lies in
+/// ball 2 exactly when it is `>= 0`.
+pub struct BallInBall;
+impl Predicate<8> for BallInBall {
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let d0 = x[4].clone() - x[0].clone();
+        let d1 = x[5].clone() - x[1].clone();
+        let d2 = x[6].clone() - x[2].clone();
+        let dr = x[7].clone() - x[3].clone();
+        dr.clone() * dr - (d0.clone() * d0 + d1.clone() * d1 + d2.clone() * d2)
+    }
+}
+
+/// `(b_j - a_j)(p_k - q_k) - (b_k - a_k)(p_j - q_j)`, inputs `[a_j, a_k, b_j, b_k, p_j, p_k,
+/// q_j, q_k]`: the component of `(e_i × (b - a))·(p - q)` for the axis `i` completing `j, k`.
+pub struct EdgeAxis;
+impl Predicate<8> for EdgeAxis {
+    #[inline(always)]
+    fn eval<R: Ring>(x: &[R; 8]) -> R {
+        let dj = x[2].clone() - x[0].clone();
+        let dk = x[3].clone() - x[1].clone();
+        let wj = x[4].clone() - x[6].clone();
+        let wk = x[5].clone() - x[7].clone();
+        dj * wk - dk * wj
     }
 }

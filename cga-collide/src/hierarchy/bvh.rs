@@ -228,7 +228,7 @@ const BINS: usize = 16;
 /// A node: its box, and either a leaf range of [`Bvh::order`] (`count > 0`) or the index of
 /// its left child (the right one follows it).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Node {
+pub struct BvhNode {
     /// Box of everything below.
     pub bounds: Aabb,
     /// Leaf: first position in the triangle order; inner: index of the left child.
@@ -237,7 +237,7 @@ pub struct Node {
     pub count: u32,
 }
 
-impl Node {
+impl BvhNode {
     /// Whether the node is a leaf.
     #[inline]
     pub fn is_leaf(&self) -> bool {
@@ -248,7 +248,7 @@ impl Node {
 /// A bounding-volume hierarchy over the triangles of one mesh.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bvh {
-    nodes: Vec<Node>,
+    nodes: Vec<BvhNode>,
     /// Triangle indices in leaf order.
     order: Vec<u32>,
     /// Boxes of the triangles, in leaf order.
@@ -277,7 +277,7 @@ impl Bvh {
         let centroids: Vec<[f64; 3]> = tri_boxes.iter().map(Aabb::centroid).collect();
         let mut order: Vec<u32> = (0..n as u32).collect();
         let mut nodes = Vec::with_capacity(2 * n / MAX_LEAF + 1);
-        nodes.push(Node {
+        nodes.push(BvhNode {
             bounds: Aabb::EMPTY,
             start: 0,
             count: 0,
@@ -322,7 +322,7 @@ impl Bvh {
                 s + m
             });
             let left = nodes.len();
-            let blank = Node {
+            let blank = BvhNode {
                 bounds: Aabb::EMPTY,
                 start: 0,
                 count: 0,
@@ -363,7 +363,7 @@ impl Bvh {
     }
 
     /// The nodes (root first).
-    pub fn nodes(&self) -> &[Node] {
+    pub fn nodes(&self) -> &[BvhNode] {
         &self.nodes
     }
 
@@ -379,7 +379,7 @@ impl Bvh {
 
     /// Heap bytes used by the hierarchy (nodes, leaf order and triangle boxes).
     pub fn heap_bytes(&self) -> usize {
-        self.nodes.len() * std::mem::size_of::<Node>()
+        self.nodes.len() * std::mem::size_of::<BvhNode>()
             + self.order.len() * std::mem::size_of::<u32>()
             + self.boxes.len() * std::mem::size_of::<Aabb>()
     }

@@ -61,24 +61,11 @@ fn extent(mesh: &TriMesh) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The next `f32` above `f` (`f` itself for `+∞` and NaN).
-fn next_up(f: f32) -> f32 {
-    if f.is_nan() || f == f32::INFINITY {
-        f
-    } else if f == 0.0 {
-        f32::from_bits(1)
-    } else if f > 0.0 {
-        f32::from_bits(f.to_bits() + 1)
-    } else {
-        f32::from_bits(f.to_bits() - 1)
-    }
-}
-
 /// An `f32` not above `x`.
 fn down(x: f64) -> f32 {
     let f = x as f32;
     if f64::from(f) > x {
-        -next_up(-f)
+        f.next_down()
     } else {
         f
     }
@@ -88,7 +75,7 @@ fn down(x: f64) -> f32 {
 fn up(x: f64) -> f32 {
     let f = x as f32;
     if f64::from(f) < x {
-        next_up(f)
+        f.next_up()
     } else {
         f
     }
@@ -114,8 +101,8 @@ fn boxes32(mesh: &TriMesh) -> Vec<[f32; 6]> {
 /// An `f32` box containing `b`, one `f32` step wider on every side (so it also contains the box
 /// of anything `b` approximates to within `f64` rounding, e.g. `centre ± radius`).
 fn query_box32(b: &Aabb) -> [f32; 6] {
-    let lo = |x: f64| -next_up(-down(x));
-    let hi = |x: f64| next_up(up(x));
+    let lo = |x: f64| down(x).next_down();
+    let hi = |x: f64| up(x).next_up();
     [
         lo(b.min[0]),
         lo(b.min[1]),

@@ -60,7 +60,7 @@ fn orient2d_perturbed(a: &Point3<f64>, b: &Point3<f64>, p: &Point3<f64>) -> Orde
     }
 }
 
-/// Whether the ray from `p` along `+x`, perturbed as in [`orient2d_perturbed`], crosses the
+/// Whether the ray from `p` along `+x`, perturbed symbolically (see the module docs), crosses the
 /// triangle `[a, b, c]` (which does not contain `p`).
 pub fn ray_crosses_triangle(t: &[Point3<f64>; 3], p: &Point3<f64>) -> bool {
     let [a, b, c] = t;

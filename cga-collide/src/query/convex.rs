@@ -1,7 +1,7 @@
 //! An exact and fast intersection test for two convex solids given as closed triangle meshes.
 //!
 //! This is the independent reference of the double-sphere experiment
-//! ([`crate::experiment`]): every answer of the sphere hierarchy is checked against it. It
+//! (the `cga experiment` command of the `cga-cli` package): every answer of the sphere hierarchy is checked against it. It
 //! shares nothing with the hierarchy but the exact predicates.
 //!
 //! The ground truth is the closed solid bounded by the given triangles (touching counts as

@@ -127,30 +127,15 @@ fn nudge(rng: &mut SplitMix64, pts: &mut [Point3<f64>]) {
     let k = rng.int(-2, 2);
     let mut x = pts[i].coords[axis];
     for _ in 0..k.abs() {
-        x = if k > 0 { next_up(x) } else { next_down(x) };
+        x = if k > 0 { x.next_up() } else { x.next_down() };
     }
     pts[i].coords[axis] = x;
 }
 
-fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
-}
-
-fn next_down(x: f64) -> f64 {
-    -next_up(-x)
-}
-
 fn nudge_len(rng: &mut SplitMix64, r: f64) -> f64 {
     match rng.int(0, 4) {
-        0 => next_up(r),
-        1 => next_down(r).max(0.0),
+        0 => r.next_up(),
+        1 => r.next_down().max(0.0),
         _ => r,
     }
 }

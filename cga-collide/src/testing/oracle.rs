@@ -149,7 +149,7 @@ pub fn hull_distance2(pts: &[Point3<f64>], c: &Point3<f64>) -> (Rational, Ration
             }
         }
         let d2 = dot(&sub(&x, &c), &sub(&x, &c));
-        if min.as_ref().map_or(true, |m| &d2 < m) {
+        if min.as_ref().is_none_or(|m| &d2 < m) {
             min = Some(d2);
         }
     }

@@ -496,7 +496,7 @@ fn blade_products_by_hand() {
 
 #[test]
 fn canonical_order_of_cl41_is_the_design_list() {
-    // The list exactly as written in DESIGN.md.
+    // The list exactly as written in docs/conventions.md.
     let design = "1, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e123, \
                   e124, e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235, e1245, \
                   e1345, e2345, e12345";
@@ -637,8 +637,8 @@ fn known_inverses() {
 #[test]
 fn errors_are_typed() {
     assert_eq!(
-        Signature::new(&[1, 1, 1, 1, 1, 1, 1]),
-        Err(ReferenceError::TooManyGenerators(7))
+        Signature::new(&[1; 11]),
+        Err(ReferenceError::TooManyGenerators(11))
     );
     assert_eq!(
         Signature::new(&[1, 3]),

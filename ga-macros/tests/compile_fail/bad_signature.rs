@@ -7,7 +7,7 @@ ga_macros::algebra! {
 mod other {
     ga_macros::algebra! {
         name: huge,
-        signature: [+1, +1, +1, +1, +1, +1, +1],
+        signature: [+1, +1, +1, +1, +1, +1, +1, +1, +1, +1, +1],
         types: { Vector: grade 1 },
     }
 }

@@ -481,11 +481,29 @@ macro_rules! unary_check {
         let ns = ra.norm_squared().to_f64().abs();
         $cx.compare_option(
             $fails,
-            &format!("{name}: inverse"),
-            a.inverse().map(|x| x.to_ref(sig)),
+            &format!("{name}: versor_inverse"),
+            a.versor_inverse().map(|x| x.to_ref(sig)),
             ra.versor_inverse(),
             if ns > 0.0 { m / ns } else { m },
         );
+        // The checked inverse: exactly the reference's general inverse when that lies in the
+        // type, else `None`; in f64, a returned value is an inverse (both products are 1).
+        // (An inverse is unique, so checking both products is checking equality with it.)
+        match a.inverse().map(|x| x.to_ref(sig)) {
+            Some(y) => {
+                let one = Dm::one(sig);
+                let scale = m * magnitude(&y) * len * len;
+                $cx.compare($fails, &format!("{name}: x inverse(x)"), &(&ra * &y), &one, scale);
+                $cx.compare($fails, &format!("{name}: inverse(x) x"), &(&y * &ra), &one, scale);
+            }
+            None if $T::EXACT => {
+                let expected = ra
+                    .general_inverse()
+                    .filter(|inv| inv.project(|k| masks.contains(&k)) == *inv);
+                $cx.compare_option($fails, &format!("{name}: inverse"), None, expected, m);
+            }
+            None => {}
+        }
     }};
 }
 

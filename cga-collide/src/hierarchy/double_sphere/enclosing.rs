@@ -6,14 +6,7 @@
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
-/// A ball: centre and radius.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BallF64 {
-    /// The centre.
-    pub centre: Point3<f64>,
-    /// The radius.
-    pub radius: f64,
-}
+use super::CentreRadius;
 
 /// Relative upward rounding applied to computed distances: `sqrt(dx² + dy² + dz²)` in `f64`
 /// errs by less than `4·2^-53` relatively, so multiplying by `1 + 2^-49` (and rounding that
@@ -28,13 +21,13 @@ pub(crate) fn dist_up(p: &Point3<f64>, c: &Point3<f64>) -> f64 {
 
 /// The smallest ball through the support points `r` (at most 4) with its centre in their affine
 /// hull; affinely dependent points (within a relative tolerance) are dropped.
-fn ball_of_support(r: &[Point3<f64>]) -> BallF64 {
+fn ball_of_support(r: &[Point3<f64>]) -> CentreRadius {
     match r.len() {
-        0 => BallF64 {
+        0 => CentreRadius {
             centre: Point3::origin(),
             radius: -1.0,
         },
-        1 => BallF64 {
+        1 => CentreRadius {
             centre: r[0],
             radius: 0.0,
         },
@@ -73,16 +66,16 @@ fn ball_of_support(r: &[Point3<f64>]) -> BallF64 {
             }
             let centre = Point3::from(c);
             let radius = r.iter().map(|p| (p - centre).norm()).fold(0.0, f64::max);
-            BallF64 { centre, radius }
+            CentreRadius { centre, radius }
         }
     }
 }
 
-fn contains(b: &BallF64, p: &Point3<f64>) -> bool {
+fn contains(b: &CentreRadius, p: &Point3<f64>) -> bool {
     b.radius >= 0.0 && (p - b.centre).norm() <= b.radius * (1.0 + 1e-12) + 1e-300
 }
 
-fn welzl(points: &[Point3<f64>], n: usize, support: &mut Vec<Point3<f64>>) -> BallF64 {
+fn welzl(points: &[Point3<f64>], n: usize, support: &mut Vec<Point3<f64>>) -> CentreRadius {
     if n == 0 || support.len() == 4 {
         return ball_of_support(support);
     }
@@ -100,7 +93,7 @@ fn welzl(points: &[Point3<f64>], n: usize, support: &mut Vec<Point3<f64>>) -> Ba
 /// The smallest ball containing `points` (Welzl's algorithm in `f64` on a deterministic
 /// shuffle; the radius is then recomputed as the largest distance to a point, rounded up, so
 /// that containment is guaranteed). An empty input gives the radius `-1` ball at the origin.
-pub fn smallest_enclosing_ball(points: &[Point3<f64>]) -> BallF64 {
+pub fn smallest_enclosing_ball(points: &[Point3<f64>]) -> CentreRadius {
     if points.is_empty() {
         return ball_of_support(&[]);
     }
@@ -123,14 +116,14 @@ pub fn smallest_enclosing_ball(points: &[Point3<f64>]) -> BallF64 {
         .iter()
         .map(|p| dist_up(p, &centre))
         .fold(0.0, f64::max);
-    BallF64 { centre, radius }
+    CentreRadius { centre, radius }
 }
 
 /// Brute force for tests: the smallest among the balls of all 1- to 4-point support sets that
 /// contain every point (within a relative tolerance). `O(n⁵)`: small inputs only.
-pub fn smallest_enclosing_ball_brute(points: &[Point3<f64>]) -> BallF64 {
+pub fn smallest_enclosing_ball_brute(points: &[Point3<f64>]) -> CentreRadius {
     let n = points.len();
-    let mut best = BallF64 {
+    let mut best = CentreRadius {
         centre: Point3::origin(),
         radius: f64::INFINITY,
     };

@@ -1,8 +1,8 @@
-//! The double hierarchy of outer and inner spheres of convex polyhedra (the seed paper
-//! `000_*`, §4) and its exact collision test.
+//! The double hierarchy of outer and inner spheres of convex polyhedra (the double-sphere paper,
+//! §4) and its exact collision test.
 //!
 //! # The tree ([`DoubleSphereTree::build`])
-//! A binary tree, stored flat (`Vec` of [`Node`]s, root at index 0). Every node holds a convex
+//! A binary tree, stored flat (`Vec` of [`DoubleSphereNode`]s, root at index 0). Every node holds a convex
 //! sub-polyhedron of the original solid (the root holds the solid itself) with
 //! * its **outer sphere**: the smallest sphere enclosing the sub-polyhedron's vertices
 //!   ([`enclosing`]: Welzl's algorithm in `f64`, then the radius recomputed as the largest
@@ -141,9 +141,10 @@ pub const MAX_LEVEL: usize = 16;
 /// and of the plane computations (about `1e-15` relative).
 pub const BUILD_MARGIN: f64 = 1e-12;
 
-/// A sphere (centre and radius) stored in a node.
+/// A sphere given by its centre and radius (a node's outer or inner sphere, or a smallest
+/// enclosing ball).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NodeSphere {
+pub struct CentreRadius {
     /// The centre (body frame).
     pub centre: Point3<f64>,
     /// The radius.
@@ -152,12 +153,12 @@ pub struct NodeSphere {
 
 /// A node of a [`DoubleSphereTree`].
 #[derive(Debug, Clone, PartialEq)]
-pub struct Node {
+pub struct DoubleSphereNode {
     /// The outer sphere: contains the node's region (the radius includes [`BUILD_MARGIN`]).
-    pub outer: NodeSphere,
+    pub outer: CentreRadius,
     /// The inner sphere: inside the node's sub-polyhedron and inside the solid (radius reduced
     /// by [`BUILD_MARGIN`], possibly 0).
-    pub inner: NodeSphere,
+    pub inner: CentreRadius,
     /// The paper's label: the outer sphere lies inside the solid.
     pub internal: bool,
     /// The two children, or `None` for a leaf.
@@ -175,7 +176,7 @@ pub struct Node {
     pub planes: std::ops::Range<u32>,
 }
 
-impl Node {
+impl DoubleSphereNode {
     /// Whether the node has no children.
     pub fn is_leaf(&self) -> bool {
         self.children.is_none()
@@ -187,7 +188,7 @@ impl Node {
 #[derive(Debug, Clone)]
 pub struct DoubleSphereTree {
     polyhedron: ConvexPolyhedron,
-    nodes: Vec<Node>,
+    nodes: Vec<DoubleSphereNode>,
     parts: Vec<SubPolyhedron>,
     leaf_triangles: Vec<u32>,
     pub(crate) leaf_planes: Vec<(Vector3<f64>, f64)>,
@@ -205,7 +206,7 @@ struct Builder<'a> {
     level: usize,
     margin: f64,
     guard: Vec<(Vector3<f64>, f64)>,
-    nodes: Vec<Node>,
+    nodes: Vec<DoubleSphereNode>,
     parts: Vec<SubPolyhedron>,
     leaf_triangles: Vec<u32>,
     face_planes: Vec<(Vector3<f64>, f64)>,
@@ -221,7 +222,7 @@ impl Builder<'_> {
     ) -> u32 {
         let index = self.nodes.len() as u32;
         let outer = enclosing::smallest_enclosing_ball(&part.vertices);
-        let outer = NodeSphere {
+        let outer = CentreRadius {
             centre: outer.centre,
             radius: outer.radius + self.margin,
         };
@@ -232,12 +233,12 @@ impl Builder<'_> {
             InnerSphereKind::Chebyshev => inscribed::chebyshev_sphere(&planes, &centroid),
         };
         let r = inscribed::depth(&planes, &c).min(inscribed::depth(&self.guard, &c)) - self.margin;
-        let inner = NodeSphere {
+        let inner = CentreRadius {
             centre: c,
             radius: r.max(0.0),
         };
         let internal = inscribed::depth(&self.guard, &outer.centre) - outer.radius > self.margin;
-        self.nodes.push(Node {
+        self.nodes.push(DoubleSphereNode {
             outer,
             inner,
             internal,
@@ -392,7 +393,7 @@ impl DoubleSphereTree {
     }
 
     /// The nodes, root first; children of a node come after it.
-    pub fn nodes(&self) -> &[Node] {
+    pub fn nodes(&self) -> &[DoubleSphereNode] {
         &self.nodes
     }
 

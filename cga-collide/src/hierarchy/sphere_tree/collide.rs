@@ -1,11 +1,11 @@
-//! Collision between two [`SphereTree`]s: the seed's method and a simultaneous descent.
+//! Collision between two [`SphereTree`]s: the paper's method and a simultaneous descent.
 //!
 //! Two trees collide when a leaf ball of one meets a leaf ball of the other (closed balls:
-//! touching counts, as the seed's `sumaRadio >= distancia`). Every ball–ball test is exact
-//! ([`balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact fall-back),
+//! touching counts, as the paper's `sumaRadio >= distancia`). Every ball–ball test is exact
+//! ([`crate::exact::balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact fall-back),
 //! where the seed computes `sqrt` in `float`.
 //!
-//! # The seed's method (paper `003`, §3.1, `Colision_Arbol` / `Colision_Esfera_Arbol` /
+//! # The paper's method (§3.1, `Colision_Arbol` / `Colision_Esfera_Arbol` /
 //! `Colision_Real`)
 //! 1. test the roots of X and Y; if they meet,
 //! 2. descend X from its root, entering every child that meets the root of Y, and list the
@@ -15,9 +15,9 @@
 //! The C++ of `Colision_Real` returns the answer of the **first** child that meets the leaf
 //! (`return m_lstEsferas[i]->Colision_Real(o_esf);`), so it follows a single path down Y and
 //! misses a collision that lies under a later child whenever an earlier child's ball meets the
-//! leaf but none of that child's leaves do. [`seed_as_written`] keeps that quirk (it can answer
-//! "no collision" for colliding trees: see the test `seed_as_written_misses_a_collision`);
-//! [`seed`] is the same code with that one line fixed (a child that does not lead to a leaf
+//! leaf but none of that child's leaves do. [`paper_method_as_published`] keeps that quirk (it can answer
+//! "no collision" for colliding trees: see the test `paper_method_as_published_misses_a_collision`);
+//! [`paper_method`] is the same code with that one line fixed (a child that does not lead to a leaf
 //! hit lets the loop go on), which is what the paper's prose (step 3: compare each element of
 //! `L` against tree Y *until* a leaf of Y meets it) describes. Both keep the C++'s other
 //! quirk: a leaf of X is tested against Y's root twice (once as a child in its parent's loop,
@@ -31,7 +31,7 @@
 //! # When they agree
 //! When every child ball lies inside its parent ball (true of every tree [`octree::build`]
 //! makes; [`SphereTree::nesting_violations`] checks it), a pair of meeting leaves implies that
-//! all their ancestors meet, so [`seed`], [`simultaneous`] and [`brute_force`] (every leaf
+//! all their ancestors meet, so [`paper_method`], [`simultaneous`] and [`brute_force`] (every leaf
 //! pair) give the same answer; the tests check it on random trees. On trees that are not
 //! nested they may differ (pruning by a parent that does not contain its child).
 //!
@@ -41,12 +41,13 @@
 //! use cga_collide::hierarchy::sphere_tree::{collide, CellState, SphereTree};
 //! let a = SphereTree::single([0.0, 0.0, 0.0], 1.0, CellState::Full)?;
 //! let b = SphereTree::single([2.0, 0.0, 0.0], 1.0, CellState::Full)?; // touching
-//! assert!(collide::seed(&a, &b).collides);
+//! assert!(collide::paper_method(&a, &b).collides);
 //! assert!(collide::simultaneous(&a, &b).collides);
 //! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
 //! ```
 
-use super::{balls_meet, SphereNode, SphereTree};
+use super::{SphereTree, SphereTreeNode};
+use crate::exact::balls_meet;
 
 /// The answer of a tree–tree collision query and what it cost.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -57,7 +58,7 @@ pub struct CollisionResult {
     pub sphere_tests: u64,
     /// A meeting pair of leaves (breadth-first indices in X and Y) when `collides`.
     pub witness: Option<(usize, usize)>,
-    /// For the seed's methods: how many leaves of X were listed in step 2 before the answer
+    /// For the paper's methods: how many leaves of X were listed in step 2 before the answer
     /// was known (the whole list: step 2 completes before step 3 starts). 0 for the others.
     pub listed_leaves: usize,
 }
@@ -66,7 +67,7 @@ struct Counter(u64);
 
 impl Counter {
     #[inline]
-    fn meet(&mut self, a: &SphereNode, b: &SphereNode) -> bool {
+    fn meet(&mut self, a: &SphereTreeNode, b: &SphereTreeNode) -> bool {
         self.0 += 1;
         balls_meet(&a.centre, a.radius, &b.centre, b.radius)
     }
@@ -75,7 +76,7 @@ impl Counter {
 /// Step 2 of the seed (`Colision_Esfera_Arbol`): the leaves of X met by the ball `o`, in the
 /// C++'s depth-first order, with its tests (each leaf is tested in its parent's loop and then
 /// again as a leaf).
-fn list_leaves(x: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Vec<usize> {
+fn list_leaves(x: &SphereTree, o: &SphereTreeNode, tests: &mut Counter) -> Vec<usize> {
     let mut out = Vec::new();
     let mut stack = vec![0usize];
     while let Some(i) = stack.pop() {
@@ -97,9 +98,9 @@ fn list_leaves(x: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Vec<usize
     out
 }
 
-/// The seed's `Colision_Real` **as written**: from the root of Y, follow the first child whose
+/// The paper's `Colision_Real` **as written**: from the root of Y, follow the first child whose
 /// ball meets `o`; report whether the leaf reached meets `o`.
-fn real_as_written(y: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Option<usize> {
+fn real_as_written(y: &SphereTree, o: &SphereTreeNode, tests: &mut Counter) -> Option<usize> {
     let mut i = 0usize;
     loop {
         let n = y.node(i);
@@ -116,7 +117,7 @@ fn real_as_written(y: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Optio
 /// `Colision_Real` with the fix: every child whose ball meets `o` is tried in turn (in the
 /// C++'s order: a child is tested, entered at once if it meets, and the next child is tested
 /// only when that subtree found no leaf).
-fn real_fixed(y: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Option<usize> {
+fn real_fixed(y: &SphereTree, o: &SphereTreeNode, tests: &mut Counter) -> Option<usize> {
     real_fixed_from(y, 0, o, tests)
 }
 
@@ -125,7 +126,7 @@ fn real_fixed(y: &SphereTree, o: &SphereNode, tests: &mut Counter) -> Option<usi
 fn real_fixed_from(
     y: &SphereTree,
     start: usize,
-    o: &SphereNode,
+    o: &SphereTreeNode,
     tests: &mut Counter,
 ) -> Option<usize> {
     // Each frame: (node, next child to try).
@@ -166,10 +167,10 @@ fn real_fixed_from(
     }
 }
 
-fn seed_with(
+fn paper_method_with(
     x: &SphereTree,
     y: &SphereTree,
-    real: impl Fn(&SphereTree, &SphereNode, &mut Counter) -> Option<usize>,
+    real: impl Fn(&SphereTree, &SphereTreeNode, &mut Counter) -> Option<usize>,
 ) -> CollisionResult {
     let mut tests = Counter(0);
     let mut result = CollisionResult {
@@ -193,16 +194,16 @@ fn seed_with(
     result
 }
 
-/// The seed's method exactly as its C++ is written, including the first-child quirk of
+/// The paper's method exactly as its C++ is written, including the first-child quirk of
 /// `Colision_Real` (see the module docs): it can miss collisions. For comparison only.
-pub fn seed_as_written(x: &SphereTree, y: &SphereTree) -> CollisionResult {
-    seed_with(x, y, real_as_written)
+pub fn paper_method_as_published(x: &SphereTree, y: &SphereTree) -> CollisionResult {
+    paper_method_with(x, y, real_as_written)
 }
 
-/// The seed's method with `Colision_Real` fixed to try every meeting child (see the module
+/// The paper's method with `Colision_Real` fixed to try every meeting child (see the module
 /// docs). Exact on nested trees.
-pub fn seed(x: &SphereTree, y: &SphereTree) -> CollisionResult {
-    seed_with(x, y, real_fixed)
+pub fn paper_method(x: &SphereTree, y: &SphereTree) -> CollisionResult {
+    paper_method_with(x, y, real_fixed)
 }
 
 /// Simultaneous descent over pairs of nodes, splitting the larger ball first.

@@ -1,4 +1,4 @@
-//! The seed's text format for sphere trees (the annex of paper `003`), reader and writer.
+//! The paper's text format for sphere trees (the annex of Fuentes Socorro's work), reader and writer.
 //!
 //! ```text
 //! 2                      <- the number of trees
@@ -9,8 +9,8 @@
 //! ...
 //! ```
 //!
-//! The reader accepts `//` comments to the end of a line (the seed marks roots with `//raíz`)
-//! and blank lines anywhere (the seed's text has them at page breaks); tokens are separated
+//! The reader accepts `//` comments to the end of a line (the paper marks roots with `//raíz`)
+//! and blank lines anywhere (the paper's text has them at page breaks); tokens are separated
 //! by any whitespace. It never panics: every problem is a [`FormatError`] naming the line
 //! (1-based) and what was expected there. Deeply nested input is parsed without recursion.
 //!
@@ -137,7 +137,7 @@ impl LenientRead {
     }
 }
 
-/// Reads every tree of a file in the seed's format; any deviation is an error.
+/// Reads every tree of a file in the paper's format; any deviation is an error.
 pub fn read(text: &str) -> Result<Vec<SphereTree>, FormatError> {
     Parser::new(text).run(false).map(|r| r.trees)
 }
@@ -148,7 +148,7 @@ pub fn read_lenient(text: &str) -> Result<LenientRead, FormatError> {
     Parser::new(text).run(true)
 }
 
-/// Writes trees in the seed's format (count line, then each tree depth-first, every number in
+/// Writes trees in the paper's format (count line, then each tree depth-first, every number in
 /// shortest round-trip form, no comments).
 pub fn write(trees: &[SphereTree]) -> String {
     let mut out = String::new();

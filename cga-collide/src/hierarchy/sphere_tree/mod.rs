@@ -1,13 +1,13 @@
-//! Octree sphere trees (the method of the seed paper `003`): a hierarchy of spheres, one per
+//! Octree sphere trees (the method of Fuentes Socorro's work): a hierarchy of spheres, one per
 //! non-empty cell of an octree over a closed mesh, and collision between two such trees.
 //!
 //! * [`SphereTree`]: the 8-ary tree itself (this module), stored flat in breadth-first order;
 //!   [`NestedNode`] is the recursive form used to build one by hand or from a file.
 //! * [`octree`]: building a tree from a closed [`TriMesh`](crate::shape::mesh::TriMesh), cells
 //!   classified full / partial / empty exactly ([`tribox`] is the exact triangle–box test).
-//! * [`collide`]: the seed's collision method (as written, and with its one defect fixed) and a
+//! * [`collide`]: the paper's collision method (as written, and with its one defect fixed) and a
 //!   simultaneous descent; every sphere–sphere test is exact.
-//! * [`format`]: the seed's text format (its annex), reader and writer.
+//! * [`format`](mod@format): the paper's text format (its annex), reader and writer.
 //!
 //! ```
 //! use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
@@ -35,10 +35,9 @@ use std::ops::Range;
 use nalgebra::{Isometry3, Point3};
 use thiserror::Error;
 
-use crate::exact::predicates::BallBall;
-use crate::exact::{Kernel, Predicate};
+use crate::exact::ball_inside;
 
-/// The state of an octree cell, as the seed's format writes it (`1` partial, `0` full).
+/// The state of an octree cell, as the paper's format writes it (`1` partial, `0` full).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum CellState {
     /// The cell lies wholly inside the solid (format code `0`).
@@ -48,7 +47,7 @@ pub enum CellState {
 }
 
 impl CellState {
-    /// The seed's code: `0` full, `1` partial.
+    /// The paper's code: `0` full, `1` partial.
     pub fn code(self) -> u8 {
         match self {
             CellState::Full => 0,
@@ -56,7 +55,7 @@ impl CellState {
         }
     }
 
-    /// The state of a seed code (`0` full, `1` partial), `None` for anything else.
+    /// The state of a code of the format (`0` full, `1` partial), `None` for anything else.
     pub fn from_code(code: u8) -> Option<CellState> {
         match code {
             0 => Some(CellState::Full),
@@ -68,7 +67,7 @@ impl CellState {
 
 /// One node of a [`SphereTree`]: a closed ball, its cell's state, and where its children are.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SphereNode {
+pub struct SphereTreeNode {
     /// Centre of the ball.
     pub centre: [f64; 3],
     /// Radius of the ball (finite, not negative).
@@ -79,7 +78,7 @@ pub struct SphereNode {
     child_count: u8,
 }
 
-impl SphereNode {
+impl SphereTreeNode {
     /// Whether the node has no children.
     pub fn is_leaf(&self) -> bool {
         self.child_count == 0
@@ -186,12 +185,12 @@ pub struct NestingViolation {
 /// the same order.
 ///
 /// The collision algorithms of [`collide`] treat the union of the leaf balls as the object;
-/// they are exact (and the seed's method and the simultaneous descent agree) when every child
+/// they are exact (and the paper's method and the simultaneous descent agree) when every child
 /// ball lies inside its parent ball, which [`octree::build`] guarantees and
 /// [`nesting_violations`](Self::nesting_violations) checks.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SphereTree {
-    nodes: Vec<SphereNode>,
+    nodes: Vec<SphereTreeNode>,
 }
 
 impl SphereTree {
@@ -207,7 +206,7 @@ impl SphereTree {
     /// The tree of a recursive node, laid out breadth-first. Checks that every value is finite,
     /// every radius non-negative and no node has more than 8 children.
     pub fn from_nested(root: &NestedNode) -> Result<SphereTree, TreeError> {
-        let mut nodes: Vec<SphereNode> = Vec::new();
+        let mut nodes: Vec<SphereTreeNode> = Vec::new();
         let mut queue: VecDeque<&NestedNode> = VecDeque::new();
         queue.push_back(root);
         // Index that the next pushed node will get.
@@ -245,7 +244,7 @@ impl SphereTree {
                     count: next + n.children.len(),
                 });
             }
-            nodes.push(SphereNode {
+            nodes.push(SphereTreeNode {
                 centre: n.centre,
                 radius: n.radius,
                 state: n.state,
@@ -263,7 +262,7 @@ impl SphereTree {
     }
 
     /// Builds from nodes already in the canonical layout (used by the octree builder).
-    pub(crate) fn from_raw(nodes: Vec<SphereNode>) -> SphereTree {
+    pub(crate) fn from_raw(nodes: Vec<SphereTreeNode>) -> SphereTree {
         SphereTree { nodes }
     }
 
@@ -273,8 +272,8 @@ impl SphereTree {
         state: CellState,
         first_child: u32,
         child_count: u8,
-    ) -> SphereNode {
-        SphereNode {
+    ) -> SphereTreeNode {
+        SphereTreeNode {
             centre,
             radius,
             state,
@@ -320,17 +319,17 @@ impl SphereTree {
     }
 
     /// All nodes, breadth-first (root first).
-    pub fn nodes(&self) -> &[SphereNode] {
+    pub fn nodes(&self) -> &[SphereTreeNode] {
         &self.nodes
     }
 
     /// Node `i` (breadth-first index).
-    pub fn node(&self, i: usize) -> &SphereNode {
+    pub fn node(&self, i: usize) -> &SphereTreeNode {
         &self.nodes[i]
     }
 
     /// The root.
-    pub fn root(&self) -> &SphereNode {
+    pub fn root(&self) -> &SphereTreeNode {
         &self.nodes[0]
     }
 
@@ -371,7 +370,7 @@ impl SphereTree {
 
     /// Heap bytes of the node array (what a query reads).
     pub fn heap_bytes(&self) -> usize {
-        self.nodes.len() * std::mem::size_of::<SphereNode>()
+        self.nodes.len() * std::mem::size_of::<SphereTreeNode>()
     }
 
     /// Every child ball that is not inside its parent ball, decided exactly: the child is
@@ -407,7 +406,7 @@ impl SphereTree {
                 let d = (Point3::from(cc) - Point3::from(nodes[i].centre)).norm();
                 let mut need = d + cr;
                 while !ball_inside(&cc, cr, &nodes[i].centre, need) {
-                    need = next_up(need.max(f64::MIN_POSITIVE));
+                    need = need.max(f64::MIN_POSITIVE).next_up();
                 }
                 r = r.max(need);
             }
@@ -431,9 +430,9 @@ impl SphereTree {
                 let p = iso.transform_point(&Point3::from(n.centre));
                 let scale = Point3::from(n.centre).coords.abs().max() + t + n.radius;
                 let margin = 16.0 * f64::EPSILON * scale;
-                SphereNode {
+                SphereTreeNode {
                     centre: [p.x, p.y, p.z],
-                    radius: next_up(n.radius + margin),
+                    radius: (n.radius + margin).next_up(),
                     ..*n
                 }
             })
@@ -446,85 +445,4 @@ impl SphereTree {
     pub fn translated(&self, v: [f64; 3]) -> SphereTree {
         self.transformed(&Isometry3::translation(v[0], v[1], v[2]))
     }
-}
-
-/// The next `f64` above a finite non-negative `x`.
-pub(crate) fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        x
-    } else if x == 0.0 {
-        f64::from_bits(1)
-    } else if x > 0.0 {
-        f64::from_bits(x.to_bits() + 1)
-    } else {
-        f64::from_bits(x.to_bits() - 1)
-    }
-}
-
-/// Whether the closed balls `(c1, r1)` and `(c2, r2)` share a point, decided exactly:
-/// `|c1 - c2| <= r1 + r2` (touching counts, as the seed's `>=`).
-///
-/// A semi-static filter decides almost every case in plain `f64`: with `u = 2^-53`, the
-/// computed `d² = Σ fl(fl(Δ)²)` is within a factor `1 ± γ5` of `|c1 - c2|²` (three rounded
-/// differences, squares and two sums of non-negative terms), and the computed
-/// `s² = fl(fl(r1 + r2)²)` within `1 ± γ3` of `(r1 + r2)²`, as long as nothing underflows or
-/// overflows; so `d² > s²·(1 + 16u)` (product rounded too) proves the balls apart and
-/// `d² < s²·(1 - 16u)` proves them meeting. Anything else (near-tangent balls, values below
-/// `1e-290` or infinite) goes to the crate's exact conformal
-/// [`BallBall`] predicate (certified filter, then exact arithmetic).
-#[inline]
-pub fn balls_meet(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    const TINY: f64 = 1e-290;
-    const K: f64 = 16.0 * f64::EPSILON / 2.0; // 16u
-    let (dx, dy, dz) = (c2[0] - c1[0], c2[1] - c1[1], c2[2] - c1[2]);
-    let d2 = dx * dx + dy * dy + dz * dz;
-    let s = r1 + r2;
-    let s2 = s * s;
-    if d2.is_finite() && s2.is_finite() {
-        if d2 == 0.0 && dx == 0.0 && dy == 0.0 && dz == 0.0 {
-            return true; // same centre, radii non-negative
-        }
-        if d2 >= TINY && s2 >= TINY {
-            if d2 > s2 * (1.0 + K) {
-                return false;
-            }
-            if d2 < s2 * (1.0 - K) {
-                return true;
-            }
-        } else if d2 >= TINY && s2 == 0.0 {
-            return false; // two points at distinct places
-        }
-    }
-    balls_meet_exact(c1, r1, c2, r2)
-}
-
-/// [`balls_meet`] without the `f64` filter: the conformal [`BallBall`] predicate through the
-/// crate's [`ExactKernel`](crate::exact::ExactKernel) (reference for the tests).
-pub fn balls_meet_exact(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    crate::exact::ExactKernel::sign::<BallBall, 8>(&[
-        c1[0], c1[1], c1[2], r1, c2[0], c2[1], c2[2], r2,
-    ]) != std::cmp::Ordering::Less
-}
-
-/// `(r2 - r1)^2 - |c1 - c2|^2`, inputs `[c1, r1, c2, r2]`: with `r2 >= r1` the ball 1 lies in
-/// ball 2 exactly when it is `>= 0`.
-struct BallInBall;
-impl Predicate<8> for BallInBall {
-    fn eval<R: ga_core::scalar::Ring>(x: &[R; 8]) -> R {
-        let d0 = x[4].clone() - x[0].clone();
-        let d1 = x[5].clone() - x[1].clone();
-        let d2 = x[6].clone() - x[2].clone();
-        let dr = x[7].clone() - x[3].clone();
-        dr.clone() * dr - (d0.clone() * d0 + d1.clone() * d1 + d2.clone() * d2)
-    }
-}
-
-/// Whether the ball `(c1, r1)` lies inside the ball `(c2, r2)`, exactly.
-pub(crate) fn ball_inside(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
-    if r1 > r2 {
-        return false;
-    }
-    crate::exact::ExactKernel::sign::<BallInBall, 8>(&[
-        c1[0], c1[1], c1[2], r1, c2[0], c2[1], c2[2], r2,
-    ]) != std::cmp::Ordering::Less
 }

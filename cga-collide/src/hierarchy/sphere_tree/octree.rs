@@ -1,9 +1,9 @@
-//! Building an octree sphere tree from a closed mesh (paper `003`, chapter 2: circumscribe the
+//! Building an octree sphere tree from a closed mesh (chapter 2: circumscribe the
 //! object with a cube, split it into eight equal cubes, recursively, to the chosen depth; every
 //! cell that is not empty becomes a sphere).
 //!
 //! # The grid
-//! The root cell is a **cube** (as in the seed: its examples' roots are cubes of side 10 and 8),
+//! The root cell is a **cube** (as in the paper: its examples' roots are cubes of side 10 and 8),
 //! centred on the mesh's bounding box, with side a little larger than the box's largest side:
 //! the side and the corner are snapped to a dyadic grid (multiples of a power of two `q` about
 //! `2^-(depth + 10)` of the side) so that **every cell corner, centre and half side at every
@@ -12,13 +12,13 @@
 //!
 //! # Cells, exactly
 //! A cell (closed box) is
-//! * **partial** when a triangle of the mesh meets it ([`tribox::triangle_meets_box`], exact;
+//! * **partial** when a triangle of the mesh meets it ([`triangle_meets_box`], exact;
 //!   candidates from the mesh's [`Bvh`](crate::hierarchy::bvh::Bvh));
 //! * otherwise wholly inside or wholly outside the solid (the cell is connected and no surface
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
 //!   **empty**.
 //!
-//! Partial cells are split down to `depth`; full cells are leaves (as in the seed's examples,
+//! Partial cells are split down to `depth`; full cells are leaves (as in the paper's examples,
 //! where state-0 nodes have no children) unless [`BuildOptions::subdivide_full`] is set; empty
 //! cells are dropped. Every cell of the tree keeps its state.
 //!
@@ -50,7 +50,7 @@ use num_traits::Zero;
 use thiserror::Error;
 
 use super::tribox::triangle_meets_box;
-use super::{next_up, CellState, SphereTree};
+use super::{CellState, SphereTree};
 use crate::hierarchy::bvh::Aabb;
 use crate::query::{Collider, Mode};
 
@@ -63,7 +63,7 @@ pub struct BuildOptions {
     /// The depth of the octree (0: the root cell only).
     pub depth: u32,
     /// Split full cells too (their children are all full), so that every leaf is at `depth`
-    /// and the leaf balls hug the solid more tightly. Off by default (the seed's trees).
+    /// and the leaf balls hug the solid more tightly. Off by default (the paper's trees).
     pub subdivide_full: bool,
     /// Require a closed mesh (every edge used by an even number of triangles); when off, an
     /// open mesh is classified by the even–odd rule of one ray per cell. On by default.
@@ -218,7 +218,7 @@ impl Grid {
             }
         }
         while exact(r) * exact(r) < three_h2 {
-            r = next_up(r);
+            r = r.next_up();
         }
         r
     }
@@ -393,7 +393,7 @@ pub fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
             if m & 2 == 0 { b.min[1] } else { b.max[1] },
             if m & 4 == 0 { b.min[2] } else { b.max[2] },
         ];
-        super::ball_inside(&p, 0.0, c, r)
+        crate::exact::ball_inside(&p, 0.0, c, r)
     })
 }
 

@@ -25,21 +25,8 @@
 
 use std::cmp::Ordering;
 
-use crate::exact::{ExactKernel, Kernel, PlaneSide, Predicate};
-
-/// `(b_j - a_j)(p_k - q_k) - (b_k - a_k)(p_j - q_j)`, inputs `[a_j, a_k, b_j, b_k, p_j, p_k,
-/// q_j, q_k]`: the component of `(e_i × (b - a))·(p - q)` for the axis `i` completing `j, k`.
-pub struct EdgeAxis;
-impl Predicate<8> for EdgeAxis {
-    #[inline(always)]
-    fn eval<R: ga_core::scalar::Ring>(x: &[R; 8]) -> R {
-        let dj = x[2].clone() - x[0].clone();
-        let dk = x[3].clone() - x[1].clone();
-        let wj = x[4].clone() - x[6].clone();
-        let wk = x[5].clone() - x[7].clone();
-        dj * wk - dk * wj
-    }
-}
+use crate::exact::predicates::EdgeAxis;
+use crate::exact::{ExactKernel, Kernel, PlaneSide};
 
 /// Whether the closed triangle `t` meets the closed box `[lo, hi]`, exactly.
 pub fn triangle_meets_box(t: &[[f64; 3]; 3], lo: &[f64; 3], hi: &[f64; 3]) -> bool {

@@ -191,7 +191,8 @@ impl TriMesh {
     /// # Ok::<(), cga_collide::mesh::MeshError>(())
     /// ```
     pub fn cuboid(min: Point3<f64>, max: Point3<f64>) -> Result<Self, MeshError> {
-        if let Some(axis) = (0..3).find(|&k| !(min[k] <= max[k])) {
+        if let Some(axis) = (0..3).find(|&k| min[k].partial_cmp(&max[k]).is_none_or(|o| o.is_gt()))
+        {
             return Err(MeshError::InvalidBox {
                 axis,
                 min: min[axis],
