@@ -5,6 +5,7 @@
 
 mod distance;
 mod experiment_cmd;
+mod poses;
 mod render;
 mod self_intersect;
 mod spheretree;
@@ -104,6 +105,15 @@ struct CollideArgs {
     /// corners as `x y z` triples; a point, a segment or a polygon).
     #[arg(long, value_name = "FILE")]
     contacts: Option<PathBuf>,
+    /// Answer many poses of B: one `ax ay az tx ty tz` per line (as --rotate, --translate).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["rotate", "translate", "pairs", "image"])]
+    poses: Option<PathBuf>,
+    /// With --poses: count the intersecting pairs of every pose.
+    #[arg(long, requires = "poses")]
+    all_pairs: bool,
+    /// With --poses: number of worker threads (default: all cores).
+    #[arg(long, value_name = "N", requires = "poses")]
+    threads: Option<usize>,
 }
 
 #[derive(Args, Debug)]
@@ -178,6 +188,9 @@ fn main() -> ExitCode {
             repeat: 3,
             clearance: None,
             contacts: None,
+            poses: None,
+            all_pairs: false,
+            threads: None,
         }),
     };
     match result {
@@ -246,6 +259,16 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     if args.unit {
         a = a.unit();
         b = b.unit();
+    }
+    if let Some(file) = &args.poses {
+        bar.finish_and_clear();
+        let options = poses::Options {
+            file,
+            all_pairs: args.all_pairs,
+            threads: args.threads,
+            json: args.json,
+        };
+        return poses::run(a, b, &options);
     }
     let b = b
         .transformed(&placement(args.rotate, args.translate))

@@ -49,6 +49,16 @@ pub struct Collider {
     mesh: TriMesh,
     bvh: Bvh,
     boxes32: Vec<[f32; 6]>,
+    /// Largest `|coordinate|` of a vertex (the scale of the rounding bounds of pose queries).
+    extent: f64,
+}
+
+/// Largest absolute vertex coordinate.
+fn extent(mesh: &TriMesh) -> f64 {
+    mesh.vertices()
+        .iter()
+        .flat_map(|v| v.coords.iter().map(|c| c.abs()))
+        .fold(0.0, f64::max)
 }
 
 /// An `f32` not above `x`.
@@ -143,7 +153,13 @@ impl Collider {
     pub fn with_strategy(mesh: TriMesh, strategy: BuildStrategy) -> Collider {
         let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
         let boxes32 = boxes32(&mesh);
-        Collider { mesh, bvh, boxes32 }
+        let extent = extent(&mesh);
+        Collider {
+            mesh,
+            bvh,
+            boxes32,
+            extent,
+        }
     }
 
     /// This collider moved by `iso`: the vertices are transformed once, in `f64` (the exact
@@ -154,7 +170,18 @@ impl Collider {
         let mut bvh = self.bvh.clone();
         bvh.refit(mesh.vertices(), mesh.triangles());
         let boxes32 = boxes32(&mesh);
-        Ok(Collider { mesh, bvh, boxes32 })
+        let extent = extent(&mesh);
+        Ok(Collider {
+            mesh,
+            bvh,
+            boxes32,
+            extent,
+        })
+    }
+
+    /// Largest absolute coordinate of a vertex.
+    pub(crate) fn extent(&self) -> f64 {
+        self.extent
     }
 
     /// The mesh, in world coordinates.

@@ -239,6 +239,11 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
 }
 
 #[inline]
+fn all_zero(s: &[Ordering; 3]) -> bool {
+    s[0] == Equal && s[1] == Equal && s[2] == Equal
+}
+
+#[inline]
 fn strictly_one_side(s: &[Ordering; 3]) -> bool {
     s[0] != Equal && s[0] == s[1] && s[0] == s[2]
 }
@@ -256,6 +261,10 @@ fn alone(s: &[Ordering; 3]) -> usize {
 }
 
 fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
+    // Each plane (normal and filter data) is computed once; its degeneracy is checked only when
+    // no side came out nonzero: a certified nonzero side proves the triangle non-degenerate (a
+    // collinear triangle has exact side 0 everywhere), so in general position the filter costs
+    // the six plane evaluations and nothing more.
     let pl1 = K::plane(p);
     let dq = pl1.sides_of(q);
     // (A degenerate first triangle gives exact zeros here, so this exit is sound before the
@@ -263,18 +272,18 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
     if strictly_one_side(&dq) {
         return false;
     }
-    if pl1.is_degenerate() {
+    if all_zero(&dq) && pl1.is_degenerate() {
         let (e0, e1) = extremes(p);
         return seg_tri::<K>(&e0, &e1, q);
     }
     let pl2 = K::plane(q);
-    if pl2.is_degenerate() {
-        let (e0, e1) = extremes(q);
-        return seg_tri_plane::<K>(&e0, &e1, p, &pl1);
-    }
     let dp = pl2.sides(&pl1);
     if strictly_one_side(&dp) {
         return false;
+    }
+    if all_zero(&dp) && pl2.is_degenerate() {
+        let (e0, e1) = extremes(q);
+        return seg_tri_plane::<K>(&e0, &e1, p, &pl1);
     }
     if dq.iter().all(|&s| s == Equal) || dp.iter().all(|&s| s == Equal) {
         return (0..3).all(|k| {

@@ -10,12 +10,16 @@
 //! * [`convex`] decides whether two convex solids intersect (certified GJK).
 //! * [`Collider`] answers mesh queries (shape against mesh, mesh against mesh, containment)
 //!   with a [`Bvh`](crate::hierarchy::Bvh) or by brute force ([`Mode`]).
+//! * [`posed`]: the same mesh queries under rigid poses (`*_at` methods of [`Collider`]), with
+//!   no per-pose work proportional to the mesh size, and the `*_batch` methods for many poses at once,
+//!   spread over the cores.
 //!
 //! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
 //! signs come from [`crate::exact`].
 
 pub mod baseline;
 mod clearance;
+mod batch;
 mod collider;
 mod contact;
 mod containment;
@@ -32,6 +36,9 @@ pub use clearance::{
     within_distance_sphere_sphere, within_distance_triangle_ball, within_distance_triangle_sphere,
     within_distance_triangle_triangle, WithinDistance,
 };
+pub mod posed;
+
+pub use batch::{BatchError, PosePair};
 pub use collider::{Collider, Mode};
 pub use contact::{
     contact_class, contact_geometry, triangle_intersection, Contact, ContactGeometry, ExactPoint,
@@ -49,3 +56,4 @@ pub use intersects::{
     IntersectsWith,
 };
 pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};
+pub use posed::PoseError;

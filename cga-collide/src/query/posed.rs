@@ -1,0 +1,848 @@
+//! Queries under poses: a [`Collider`] built once in its own frame answers for any rigid pose
+//! (`nalgebra::Isometry3<f64>`) with no work proportional to the mesh size, and every answer is
+//! **identical** to placing the mesh first ([`Collider::placed`]) and asking the placed copy.
+//!
+//! # How
+//! * Mesh against mesh: the two hierarchies are descended together under the relative motion.
+//!   A box of B is carried into A's frame by a rounded relative transform, and the box test is
+//!   widened by a margin that bounds every rounding on the way (below), so no pair of
+//!   triangles that meets after placing is ever pruned.
+//! * Mesh against a shape: each box of the hierarchy is carried into the world by the pose,
+//!   widened the same way, and tested against the shape.
+//! * At the leaves, only the candidate triangles are transformed, with **the very expression
+//!   `pose * v` that [`TriMesh::transformed`](crate::TriMesh::transformed) uses**, so they are
+//!   bit-identical to the placed mesh's triangles; the placed query's exact box filter and exact
+//!   test then decide, on the same numbers.
+//!
+//! # The rounding bound
+//! nalgebra evaluates `pose * v` for the unit quaternion `q = (w, u)` and translation `τ` as
+//! `t = 2(u × v)`, `r = (w t + u × t) + v`, `r + τ`. In exact arithmetic that is the linear map
+//! `M(q) v + τ` with `M(q) = (1 - 2|u|²) I + 2 u uᵀ + 2 w [u]×` (a rotation when `|q| = 1`, and
+//! still the map the formula denotes when `|q|` is off by rounding). With `a = max(|w|, |uᵢ|)`,
+//! `ρ = max |vᵢ|` and `u = 2⁻⁵³`, a forward error analysis of those 30-odd operations gives
+//! `|fl(pose * v) - (M v + τ)|∞ ≤ u (80 a² ρ + 2ρ + |τ|∞) (1 + 4u)`; the code uses
+//! `δ = u (96 a² ρ + 4ρ + 2|τ|∞) + 2⁻¹⁰⁰⁰` (the last term covers underflow). So each placed
+//! triangle lies within `δ` (per coordinate) of the exact image of its local triangle, hence of
+//! the exact image of any local box holding it.
+//!
+//! `M` itself is evaluated in `f64` as `M̂` with `|M - M̂| ≤ 16u(1 + a²)` per entry.
+//! * World boxes (shape queries): the box `[lo, hi]` maps into `τ + Σⱼ [min, max](M̂ᵢⱼ loⱼ,
+//!   M̂ᵢⱼ hiⱼ)`, widened by `δ + 3ρ|M - M̂| + 16u(3 m ρ + |τ|∞)` (`m = max |M̂ᵢⱼ|`), which also
+//!   pays for the rounding of that sum and of the widening itself.
+//! * Relative boxes (mesh against mesh): with `D = M̂_Aᵀ` (any matrix would do; this one makes
+//!   `D M_A ≈ I`), a common point `x` of two placed triangles satisfies
+//!   `D x - D τ_A ∈ box_A ⊕ r_A` and `D x - D τ_A ∈ R̂ box_B + t̂ ⊕ r_B`, where
+//!   `R̂ = fl(D M̂_B)`, `t̂ = fl(D fl(τ_B - τ_A))` and the radii collect `|D M_A - I|`,
+//!   `|D M_B - R̂|` (matrix-product rounding `4u|D||M̂|` plus `|D| |M - M̂|`), `|D| δ` and the
+//!   rounding of `t̂`. The test `box_A` against the box of `R̂ box_B + t̂`, widened by
+//!   `r_A + r_B` plus `16u` times the magnitudes involved, is therefore conservative.
+//!
+//! Poses whose quaternion is far from unit (`|q|²` outside `[1/2, 2]`), non-finite poses, and
+//! meshes or translations so large that the bounds could overflow (`|coordinate| ≥ 2⁹⁹⁰`) get a
+//! [`PoseError`] instead of an answer.
+//!
+//! ```
+//! use cga_collide::query::{Collider, Mode};
+//! use cga_collide::{nalgebra::{Isometry3, Vector3}, TriMesh};
+//! let a = Collider::new(TriMesh::bunny().unit());
+//! let b = Collider::new(TriMesh::bunny().unit());
+//! let pa = Isometry3::identity();
+//! let pb = Isometry3::new(Vector3::new(0.3, 0.05, 0.0), Vector3::new(0.0, 0.5, 0.0));
+//! let pairs = a.intersecting_pairs_at(&pa, &b, &pb)?;
+//! // Identical to placing both meshes first:
+//! let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+//! assert_eq!(pairs, wa.intersecting_pairs(&wb, Mode::Bvh));
+//! assert_eq!(a.collides_at(&pa, &b, &pb)?, !pairs.is_empty());
+//! # Ok::<(), cga_collide::query::PoseError>(())
+//! ```
+
+use std::ops::ControlFlow;
+
+use nalgebra::{Isometry3, Point3};
+use thiserror::Error;
+
+use crate::hierarchy::bvh::{Aabb, Bvh, MAX_LEAF};
+use crate::parallel::*;
+use crate::query::{ray_crosses_triangle, Collider};
+use crate::{Ball, Intersects, Segment, Sphere, Triangle};
+
+/// Why a pose query has no answer.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum PoseError {
+    /// A quaternion or translation component of the pose is NaN or infinite.
+    #[error("the pose has a non-finite component")]
+    NonFinite,
+    /// The pose's quaternion is far from unit length (`|q|²` outside `[1/2, 2]`).
+    #[error("the pose's rotation is not a unit quaternion (|q|² = {norm_squared})")]
+    NotUnit {
+        /// The squared length of the quaternion.
+        norm_squared: f64,
+    },
+    /// Coordinates or translations so large that the rounding bounds could overflow
+    /// (`|coordinate| ≥ 2^990`).
+    #[error("coordinates too large for a certified pose query (|x| up to {magnitude:e})")]
+    OutOfRange {
+        /// The largest magnitude involved.
+        magnitude: f64,
+    },
+}
+
+/// `2^-53`, the unit roundoff.
+const U: f64 = f64::EPSILON / 2.0;
+/// Absolute allowance for underflow (generous: the true figure is a few `2^-1074`).
+const TINY: f64 = 9.332636185032189e-302; // 2^-1000
+/// Largest magnitude for which no bound below can overflow.
+const RANGE: f64 = 9.774714424757689e297; // 2^990
+
+type Mat = [[f64; 3]; 3];
+
+/// A pose analysed once: the `f64` matrix of its rotation, its translation and the constants
+/// of its rounding bounds.
+#[derive(Debug, Clone, Copy)]
+struct PoseMap {
+    /// `M̂`, row-major.
+    m: Mat,
+    t: [f64; 3],
+    /// `max(|w|, |x|, |y|, |z|)` of the quaternion.
+    a: f64,
+    /// `max |M̂ᵢⱼ|`.
+    mmax: f64,
+    /// `|τ|∞`.
+    tmax: f64,
+}
+
+impl PoseMap {
+    fn new(iso: &Isometry3<f64>) -> Result<PoseMap, PoseError> {
+        let q = iso.rotation.quaternion();
+        let (w, x, y, z) = (q.w, q.i, q.j, q.k);
+        let t = [
+            iso.translation.vector.x,
+            iso.translation.vector.y,
+            iso.translation.vector.z,
+        ];
+        if ![w, x, y, z].iter().chain(&t).all(|c| c.is_finite()) {
+            return Err(PoseError::NonFinite);
+        }
+        let n2 = w * w + x * x + y * y + z * z;
+        if !(0.5..=2.0).contains(&n2) {
+            return Err(PoseError::NotUnit { norm_squared: n2 });
+        }
+        let m = [
+            [
+                1.0 - 2.0 * (y * y + z * z),
+                2.0 * (x * y - w * z),
+                2.0 * (x * z + w * y),
+            ],
+            [
+                2.0 * (x * y + w * z),
+                1.0 - 2.0 * (x * x + z * z),
+                2.0 * (y * z - w * x),
+            ],
+            [
+                2.0 * (x * z - w * y),
+                2.0 * (y * z + w * x),
+                1.0 - 2.0 * (x * x + y * y),
+            ],
+        ];
+        let a = w.abs().max(x.abs()).max(y.abs()).max(z.abs());
+        let mmax = m.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+        let tmax = t.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+        Ok(PoseMap {
+            m,
+            t,
+            a,
+            mmax,
+            tmax,
+        })
+    }
+
+    /// `δ`: bound on `|fl(pose * v) - (M v + τ)|∞` for `|v|∞ ≤ rho`.
+    fn delta(&self, rho: f64) -> f64 {
+        U * (96.0 * self.a * self.a * rho + 4.0 * rho + 2.0 * self.tmax) + TINY
+    }
+
+    /// Bound on `|M - M̂|` per entry.
+    fn matrix_error(&self) -> f64 {
+        16.0 * U * (1.0 + self.a * self.a) + TINY
+    }
+
+    fn check_range(&self, rho: f64) -> Result<(), PoseError> {
+        let magnitude = rho.max(self.tmax);
+        if magnitude < RANGE {
+            Ok(())
+        } else {
+            Err(PoseError::OutOfRange { magnitude })
+        }
+    }
+}
+
+/// `[min, max]` of `t + Σⱼ mⱼ yⱼ` over `y` in the box, for one row `m` (rounded to nearest).
+#[inline(always)]
+fn row_range(m: &[f64; 3], t: f64, b: &Aabb) -> (f64, f64) {
+    let (mut lo, mut hi) = (t, t);
+    for ((&mj, &x), &y) in m.iter().zip(&b.min).zip(&b.max) {
+        let p = mj * x;
+        let q = mj * y;
+        if p <= q {
+            lo += p;
+            hi += q;
+        } else {
+            lo += q;
+            hi += p;
+        }
+    }
+    (lo, hi)
+}
+
+/// Carries boxes of a mesh's own frame into the world under a pose, conservatively.
+#[derive(Debug, Clone, Copy)]
+struct WorldBoxes {
+    m: Mat,
+    t: [f64; 3],
+    margin: f64,
+}
+
+impl WorldBoxes {
+    fn new(pose: &PoseMap, rho: f64) -> WorldBoxes {
+        let margin = pose.delta(rho)
+            + 3.0 * rho * pose.matrix_error()
+            + 16.0 * U * (3.0 * pose.mmax * rho + pose.tmax)
+            + TINY;
+        WorldBoxes {
+            m: pose.m,
+            t: pose.t,
+            margin: margin * (1.0 + 8.0 * U),
+        }
+    }
+
+    /// A world box holding the placed image of everything inside the local box `b`.
+    #[inline]
+    fn world(&self, b: &Aabb) -> Aabb {
+        let mut out = Aabb::EMPTY;
+        for i in 0..3 {
+            let (lo, hi) = row_range(&self.m[i], self.t[i], b);
+            out.min[i] = lo - self.margin;
+            out.max[i] = hi + self.margin;
+        }
+        out
+    }
+}
+
+/// The relative motion of B into A's frame, rounded, with the margin that makes box tests in
+/// A's frame conservative for the placed meshes (module docs).
+#[derive(Debug, Clone, Copy)]
+struct Relative {
+    r: Mat,
+    t: [f64; 3],
+    margin: f64,
+}
+
+fn mat_mul(x: &Mat, y: &Mat) -> Mat {
+    let mut out = [[0.0; 3]; 3];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v = x[i][0] * y[0][j] + x[i][1] * y[1][j] + x[i][2] * y[2][j];
+        }
+    }
+    out
+}
+
+fn transpose(x: &Mat) -> Mat {
+    let mut out = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            out[i][j] = x[j][i];
+        }
+    }
+    out
+}
+
+impl Relative {
+    fn new(pa: &PoseMap, rho_a: f64, pb: &PoseMap, rho_b: f64) -> Relative {
+        let d = transpose(&pa.m);
+        // |D| row sums.
+        let dsum = 3.0 * pa.mmax;
+        let g = mat_mul(&d, &pa.m);
+        let mut dev = 0.0f64;
+        for (i, row) in g.iter().enumerate() {
+            for (j, v) in row.iter().enumerate() {
+                let id = if i == j { 1.0 } else { 0.0 };
+                dev = dev.max((v - id).abs());
+            }
+        }
+        let eta_a = dev * (1.0 + 4.0 * U)
+            + 4.0 * U * 3.0 * pa.mmax * pa.mmax
+            + dsum * pa.matrix_error()
+            + TINY;
+        let r = mat_mul(&d, &pb.m);
+        let eta_b = 4.0 * U * 3.0 * pa.mmax * pb.mmax + dsum * pb.matrix_error() + TINY;
+        let dt = [pb.t[0] - pa.t[0], pb.t[1] - pa.t[1], pb.t[2] - pa.t[2]];
+        let dtmax = dt.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+        let t = [
+            d[0][0] * dt[0] + d[0][1] * dt[1] + d[0][2] * dt[2],
+            d[1][0] * dt[0] + d[1][1] * dt[1] + d[1][2] * dt[2],
+            d[2][0] * dt[0] + d[2][1] * dt[1] + d[2][2] * dt[2],
+        ];
+        let e_t = 16.0 * U * dsum * dtmax + TINY;
+        let rmax = r.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+        let tmax = t.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+        let radius = 3.0 * eta_a * rho_a
+            + dsum * pa.delta(rho_a)
+            + 3.0 * eta_b * rho_b
+            + dsum * pb.delta(rho_b)
+            + e_t;
+        let margin = radius + 16.0 * U * (3.0 * rmax * rho_b + tmax + rho_a + radius) + TINY;
+        Relative {
+            r,
+            t,
+            margin: margin * (1.0 + 8.0 * U),
+        }
+    }
+
+    /// `false` only if no placed triangle under `a` (local box of A) meets a placed triangle
+    /// under `b` (local box of B).
+    #[inline]
+    fn may_overlap(&self, a: &Aabb, b: &Aabb) -> bool {
+        for i in 0..3 {
+            let (lo, hi) = row_range(&self.r[i], self.t[i], b);
+            if lo - self.margin > a.max[i] || hi + self.margin < a.min[i] {
+                return false;
+            }
+        }
+        true
+    }
+}
+
+/// A triangle of a leaf, placed exactly as [`Collider::placed`] places it, with its box.
+#[derive(Debug, Clone, Copy)]
+struct Placed {
+    index: u32,
+    tri: Triangle,
+    bounds: Aabb,
+}
+
+/// The placed triangles of leaf `node` (at most [`MAX_LEAF`]).
+#[inline]
+fn place_leaf(c: &Collider, node: usize, iso: &Isometry3<f64>, out: &mut [Option<Placed>; 4]) {
+    let n = &c.bvh().nodes()[node];
+    let s = n.start as usize;
+    let order = c.bvh().order();
+    for (k, slot) in out.iter_mut().enumerate() {
+        *slot = (k < n.count as usize).then(|| place(c, order[s + k], iso));
+    }
+}
+
+#[inline]
+fn place(c: &Collider, index: u32, iso: &Isometry3<f64>) -> Placed {
+    let [a, b, d] = c.mesh().triangle(index as usize);
+    // The expression of `TriMesh::transformed`, hence bit-identical coordinates.
+    let (a, b, d) = (iso * a, iso * b, iso * d);
+    let bounds = Aabb::of_points(&[a, b, d]);
+    // The range check of every pose query keeps the coordinates finite (no overflow).
+    let tri = Triangle::new(a, b, d)
+        .unwrap_or_else(|_| unreachable!("range-checked pose gives finite coordinates"));
+    Placed { index, tri, bounds }
+}
+
+/// Hashes a node index (one multiplication; the keys are small distinct integers).
+#[derive(Default)]
+struct NodeHasher(u64);
+
+impl std::hash::Hasher for NodeHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 << 8 | u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+    fn write_usize(&mut self, n: usize) {
+        self.0 = (n as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
+
+/// The placed triangles of the leaves met so far in one traversal (work proportional to the
+/// leaves visited, not to the mesh).
+#[derive(Default)]
+struct LeafCache {
+    slot: std::collections::HashMap<usize, usize, std::hash::BuildHasherDefault<NodeHasher>>,
+    leaves: Vec<[Option<Placed>; 4]>,
+}
+
+impl LeafCache {
+    /// Index into `leaves` of leaf `node`, placing it on first use.
+    #[inline]
+    fn get(&mut self, c: &Collider, node: usize, iso: &Isometry3<f64>) -> usize {
+        let leaves = &mut self.leaves;
+        *self.slot.entry(node).or_insert_with(|| {
+            let mut l = [None; 4];
+            place_leaf(c, node, iso, &mut l);
+            leaves.push(l);
+            leaves.len() - 1
+        })
+    }
+}
+
+const _: () = assert!(MAX_LEAF <= 4, "leaf buffers hold four triangles");
+
+/// Two colliders under their poses, ready to be traversed together.
+struct PosedPair<'a> {
+    a: &'a Collider,
+    b: &'a Collider,
+    pose_a: Isometry3<f64>,
+    pose_b: Isometry3<f64>,
+    /// B's boxes in A's frame.
+    rel: Relative,
+    /// A's boxes in B's frame (the other three face axes of the separating-axis test).
+    inv: Relative,
+}
+
+impl<'a> PosedPair<'a> {
+    fn new(
+        a: &'a Collider,
+        pose_a: &Isometry3<f64>,
+        b: &'a Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<PosedPair<'a>, PoseError> {
+        let pa = PoseMap::new(pose_a)?;
+        let pb = PoseMap::new(pose_b)?;
+        pa.check_range(a.extent())?;
+        pb.check_range(b.extent())?;
+        let rel = Relative::new(&pa, a.extent(), &pb, b.extent());
+        let inv = Relative::new(&pb, b.extent(), &pa, a.extent());
+        Ok(PosedPair {
+            a,
+            b,
+            pose_a: *pose_a,
+            pose_b: *pose_b,
+            rel,
+            inv,
+        })
+    }
+
+    /// `false` only if nothing placed under node box `x` of A meets anything placed under node
+    /// box `y` of B: B's box tested in A's frame, then A's box in B's frame.
+    #[inline]
+    fn may_overlap(&self, x: &Aabb, y: &Aabb) -> bool {
+        self.rel.may_overlap(x, y) && self.inv.may_overlap(y, x)
+    }
+
+    /// Calls `visit(i, j)` for every pair of placed triangles whose boxes overlap and which
+    /// meet (exactly), below the node pairs of `stack`; stops when `visit` breaks.
+    fn traverse<B>(
+        &self,
+        stack: &mut Vec<(usize, usize)>,
+        mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        let (na, nb) = (self.a.bvh().nodes(), self.b.bvh().nodes());
+        // Leaves meet many leaves of the other tree: each is placed once per traversal.
+        let mut cache_a = LeafCache::default();
+        let mut cache_b = LeafCache::default();
+        while let Some((i, j)) = stack.pop() {
+            let (x, y) = (&na[i], &nb[j]);
+            if !self.may_overlap(&x.bounds, &y.bounds) {
+                continue;
+            }
+            match (x.is_leaf(), y.is_leaf()) {
+                (true, true) => {
+                    let la = cache_a.get(self.a, i, &self.pose_a);
+                    let lb = cache_b.get(self.b, j, &self.pose_b);
+                    for p in cache_a.leaves[la].iter().flatten() {
+                        for q in cache_b.leaves[lb].iter().flatten() {
+                            if p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri) {
+                                visit(p.index, q.index)?;
+                            }
+                        }
+                    }
+                }
+                (false, true) => push_children(stack, x.start as usize, j, true),
+                (true, false) => push_children(stack, i, y.start as usize, false),
+                (false, false) => {
+                    if x.bounds.half_area() >= y.bounds.half_area() {
+                        push_children(stack, x.start as usize, j, true);
+                    } else {
+                        push_children(stack, i, y.start as usize, false);
+                    }
+                }
+            }
+        }
+        ControlFlow::Continue(())
+    }
+
+    /// Node pairs covering the whole traversal, at least `want` of them when the trees allow
+    /// (breadth-first split of the root pair), for spreading over the cores.
+    fn split(&self, want: usize) -> Vec<(usize, usize)> {
+        let (na, nb) = (self.a.bvh().nodes(), self.b.bvh().nodes());
+        let mut level = vec![(0usize, 0usize)];
+        for _ in 0..64 {
+            if level.len() >= want {
+                break;
+            }
+            let mut next = Vec::with_capacity(level.len() * 2);
+            let mut grew = false;
+            for &(i, j) in &level {
+                let (x, y) = (&na[i], &nb[j]);
+                if !self.may_overlap(&x.bounds, &y.bounds) {
+                    continue;
+                }
+                let split_a = match (x.is_leaf(), y.is_leaf()) {
+                    (true, true) => {
+                        next.push((i, j));
+                        continue;
+                    }
+                    (false, true) => true,
+                    (true, false) => false,
+                    (false, false) => x.bounds.half_area() >= y.bounds.half_area(),
+                };
+                grew = true;
+                if split_a {
+                    let s = x.start as usize;
+                    next.extend([(s, j), (s + 1, j)]);
+                } else {
+                    let s = y.start as usize;
+                    next.extend([(i, s), (i, s + 1)]);
+                }
+            }
+            level = next;
+            if !grew {
+                break;
+            }
+        }
+        level
+    }
+}
+
+#[inline]
+fn push_children(stack: &mut Vec<(usize, usize)>, i: usize, j: usize, split_a: bool) {
+    if split_a {
+        stack.push((i + 1, j));
+        stack.push((i, j));
+    } else {
+        stack.push((i, j + 1));
+        stack.push((i, j));
+    }
+}
+
+/// Node pairs per core in the parallel all-pairs traversal.
+const TASKS_PER_CORE: usize = 16;
+
+fn cores() -> usize {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::current_num_threads()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        1
+    }
+}
+
+/// Pose queries: `self` at `pose`, the other mesh (if any) at its own pose. Each answer equals
+/// the answer of the same query on [`Collider::placed`] copies (see [`crate::query::posed`]).
+impl Collider {
+    /// Whether any triangle of `self` placed at `pose_a` meets any triangle of `other` placed
+    /// at `pose_b` (stops at the first hit; single-threaded). Equal to
+    /// `self.placed(pose_a)?.collides(&other.placed(pose_b)?, mode)`.
+    pub fn collides_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<bool, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let mut stack = Vec::with_capacity(128);
+        stack.push((0, 0));
+        Ok(pair
+            .traverse(&mut stack, |_, _| ControlFlow::Break(()))
+            .is_break())
+    }
+
+    /// Every intersecting pair `(i, j)` (triangle `i` of `self` at `pose_a`, `j` of `other` at
+    /// `pose_b`), sorted; the traversal is split over the cores (rayon, feature `parallel`).
+    /// Equal to `self.placed(pose_a)?.intersecting_pairs(&other.placed(pose_b)?, mode)`.
+    pub fn intersecting_pairs_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<Vec<(u32, u32)>, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let threads = cores();
+        let mut out = if threads <= 1 {
+            collect_pairs(&pair, vec![(0, 0)])
+        } else {
+            let tasks = pair.split(threads * TASKS_PER_CORE);
+            tasks
+                .par_iter()
+                .map(|&task| collect_pairs(&pair, vec![task]))
+                .reduce(Vec::new, |mut x, y| {
+                    x.extend(y);
+                    x
+                })
+        };
+        out.sort_unstable();
+        Ok(out)
+    }
+
+    /// Like [`intersecting_pairs_at`](Self::intersecting_pairs_at) on the calling thread only
+    /// (what the batch queries run per pose).
+    pub fn intersecting_pairs_at_sequential(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<Vec<(u32, u32)>, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let mut out = collect_pairs(&pair, vec![(0, 0)]);
+        out.sort_unstable();
+        Ok(out)
+    }
+
+    /// Whether the solids bounded by the two closed meshes, at their poses, share a point
+    /// (surfaces meet, or one lies wholly inside the other). Equal to
+    /// [`collides_solid`](Self::collides_solid) on the placed copies.
+    pub fn collides_solid_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<bool, PoseError> {
+        if self.collides_at(pose_a, other, pose_b)? {
+            return Ok(true);
+        }
+        // The first placed vertex of each, placed by the same expression as `placed()`.
+        let first =
+            |c: &Collider, pose: &Isometry3<f64>| c.mesh().vertices().first().map(|v| pose * v);
+        if let Some(v) = first(self, pose_a) {
+            if other.contains_point_at(pose_b, &v)? {
+                return Ok(true);
+            }
+        }
+        if let Some(v) = first(other, pose_b) {
+            if self.contains_point_at(pose_a, &v)? {
+                return Ok(true);
+            }
+        }
+        Ok(false)
+    }
+
+    /// Whether the world point `p` lies in the closed solid bounded by this mesh placed at
+    /// `pose`. Equal to [`contains_point`](Self::contains_point) on the placed copy.
+    pub fn contains_point_at(
+        &self,
+        pose: &Isometry3<f64>,
+        p: &Point3<f64>,
+    ) -> Result<bool, PoseError> {
+        let world = self.world_boxes(pose)?;
+        let Ok(point) = Segment::new(*p, *p) else {
+            return Ok(false);
+        };
+        let on_ray = |b: &Aabb| {
+            b.min[1] <= p.y
+                && p.y <= b.max[1]
+                && b.min[2] <= p.z
+                && p.z <= b.max[2]
+                && b.max[0] >= p.x
+        };
+        let mut crossings = 0usize;
+        let on = self
+            .posed_candidates(&world, pose, on_ray, |t| {
+                if t.tri.intersects(&point) {
+                    return ControlFlow::Break(());
+                }
+                crossings += usize::from(ray_crosses_triangle(t.tri.vertices(), p));
+                ControlFlow::Continue(())
+            })
+            .is_break();
+        Ok(on || crossings % 2 == 1)
+    }
+
+    /// Sorted indices of the triangles of this mesh at `pose` that the world segment meets.
+    pub fn segment_hits_at(
+        &self,
+        pose: &Isometry3<f64>,
+        s: &Segment,
+    ) -> Result<Vec<u32>, PoseError> {
+        let (p, q) = (*s.a(), *s.b());
+        self.hits_at(pose, |b| b.may_meet_segment(&p, &q), |t| t.intersects(s))
+    }
+
+    /// Sorted indices of the triangles of this mesh at `pose` that the world triangle meets.
+    pub fn triangle_hits_at(
+        &self,
+        pose: &Isometry3<f64>,
+        t: &Triangle,
+    ) -> Result<Vec<u32>, PoseError> {
+        let tb = Aabb::of_points(t.vertices());
+        self.hits_at(pose, |b| b.overlaps(&tb), |u| u.intersects(t))
+    }
+
+    /// Sorted indices of the triangles of this mesh at `pose` that the sphere surface meets.
+    pub fn sphere_hits_at(&self, pose: &Isometry3<f64>, s: &Sphere) -> Result<Vec<u32>, PoseError> {
+        let (c, r) = (*s.centre(), s.radius());
+        self.hits_at(pose, |b| b.may_meet_sphere(&c, r), |t| t.intersects(s))
+    }
+
+    /// Sorted indices of the triangles of this mesh at `pose` that the solid ball meets.
+    pub fn ball_hits_at(&self, pose: &Isometry3<f64>, s: &Ball) -> Result<Vec<u32>, PoseError> {
+        let (c, r) = (*s.centre(), s.radius());
+        self.hits_at(pose, |b| b.may_meet_ball(&c, r), |t| t.intersects(s))
+    }
+
+    fn world_boxes(&self, pose: &Isometry3<f64>) -> Result<WorldBoxes, PoseError> {
+        let map = PoseMap::new(pose)?;
+        map.check_range(self.extent())?;
+        Ok(WorldBoxes::new(&map, self.extent()))
+    }
+
+    fn hits_at(
+        &self,
+        pose: &Isometry3<f64>,
+        test: impl Fn(&Aabb) -> bool,
+        hit: impl Fn(&Triangle) -> bool,
+    ) -> Result<Vec<u32>, PoseError> {
+        let world = self.world_boxes(pose)?;
+        let mut out = Vec::new();
+        let _ = self.posed_candidates::<()>(&world, pose, test, |t| {
+            if hit(&t.tri) {
+                out.push(t.index);
+            }
+            ControlFlow::Continue(())
+        });
+        out.sort_unstable();
+        Ok(out)
+    }
+
+    /// Calls `visit` with every placed triangle whose (exact, placed) box passes `test`,
+    /// reached through nodes whose conservative world boxes pass `test`.
+    fn posed_candidates<B>(
+        &self,
+        world: &WorldBoxes,
+        pose: &Isometry3<f64>,
+        test: impl Fn(&Aabb) -> bool,
+        mut visit: impl FnMut(&Placed) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        let bvh: &Bvh = self.bvh();
+        let nodes = bvh.nodes();
+        let mut stack = Vec::with_capacity(64);
+        stack.push(0usize);
+        while let Some(i) = stack.pop() {
+            let node = &nodes[i];
+            if !test(&world.world(&node.bounds)) {
+                continue;
+            }
+            let s = node.start as usize;
+            if node.is_leaf() {
+                for &t in &bvh.order()[s..s + node.count as usize] {
+                    let placed = place(self, t, pose);
+                    if test(&placed.bounds) {
+                        visit(&placed)?;
+                    }
+                }
+            } else {
+                stack.push(s + 1);
+                stack.push(s);
+            }
+        }
+        ControlFlow::Continue(())
+    }
+}
+
+fn collect_pairs(pair: &PosedPair<'_>, mut stack: Vec<(usize, usize)>) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    let _ = pair.traverse::<()>(&mut stack, |i, j| {
+        out.push((i, j));
+        ControlFlow::Continue(())
+    });
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{UnitQuaternion, Vector3};
+    use proptest::prelude::*;
+
+    fn pose(r: [f64; 3], t: [f64; 3]) -> Isometry3<f64> {
+        Isometry3::from_parts(
+            nalgebra::Translation3::new(t[0], t[1], t[2]),
+            UnitQuaternion::from_euler_angles(r[0], r[1], r[2]),
+        )
+    }
+
+    proptest! {
+        /// The analysed matrix and the rounding bound `δ` cover nalgebra's `pose * v`.
+        #[test]
+        fn rounding_bound_covers_the_transform(
+            r in prop::array::uniform3(-4.0f64..4.0),
+            t in prop::array::uniform3(-100.0f64..100.0),
+            v in prop::array::uniform3(-1000.0f64..1000.0),
+        ) {
+            let iso = pose(r, t);
+            let map = PoseMap::new(&iso).unwrap();
+            let p = iso * Point3::new(v[0], v[1], v[2]);
+            let rho = v.iter().fold(0.0f64, |s, x| s.max(x.abs()));
+            for i in 0..3 {
+                let exactish = map.m[i][0] * v[0] + map.m[i][1] * v[1] + map.m[i][2] * v[2] + t[i];
+                // M̂ is within a few ulps of M; the bound must hold with room to spare.
+                let slack = map.delta(rho) + 3.0 * rho * map.matrix_error() + 8.0 * U * (3.0 * rho + 100.0);
+                prop_assert!((p[i] - exactish).abs() <= slack, "{} vs {}", p[i], exactish);
+            }
+        }
+
+        /// World boxes of a box hold the placed images of its corners.
+        #[test]
+        fn world_boxes_hold_placed_points(
+            r in prop::array::uniform3(-4.0f64..4.0),
+            t in prop::array::uniform3(-10.0f64..10.0),
+            lo in prop::array::uniform3(-2.0f64..0.0),
+            hi in prop::array::uniform3(0.0f64..2.0),
+        ) {
+            let iso = pose(r, t);
+            let map = PoseMap::new(&iso).unwrap();
+            let w = WorldBoxes::new(&map, 2.0);
+            let b = Aabb { min: lo, max: hi };
+            let wb = w.world(&b);
+            for k in 0..8 {
+                let c = Point3::new(
+                    if k & 1 == 0 { lo[0] } else { hi[0] },
+                    if k & 2 == 0 { lo[1] } else { hi[1] },
+                    if k & 4 == 0 { lo[2] } else { hi[2] },
+                );
+                let p = iso * c;
+                let point = Aabb { min: p.coords.into(), max: p.coords.into() };
+                prop_assert!(wb.overlaps(&point));
+            }
+        }
+    }
+
+    #[test]
+    fn bad_poses_are_typed_errors() {
+        let c = Collider::new(
+            crate::TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap(),
+        );
+        let id = Isometry3::identity();
+        let mut nan = id;
+        nan.translation.vector.x = f64::NAN;
+        assert_eq!(c.collides_at(&id, &c, &nan), Err(PoseError::NonFinite));
+        let q = nalgebra::Quaternion::new(3.0, 0.0, 0.0, 0.0);
+        let big = Isometry3::from_parts(
+            nalgebra::Translation3::identity(),
+            UnitQuaternion::new_unchecked(q),
+        );
+        assert!(matches!(
+            c.collides_at(&id, &c, &big),
+            Err(PoseError::NotUnit { .. })
+        ));
+        let far = Isometry3::translation(1e300, 0.0, 0.0);
+        assert!(matches!(
+            c.segment_hits_at(
+                &far,
+                &Segment::new(Point3::origin(), Point3::origin()).unwrap()
+            ),
+            Err(PoseError::OutOfRange { .. })
+        ));
+        let _ = Vector3::<f64>::x();
+    }
+}
