@@ -209,7 +209,7 @@ pub fn reorder_sign(a: usize, b: usize) -> i8 {
         swaps += (rest & b).count_ones();
         rest >>= 1;
     }
-    if swaps % 2 == 0 {
+    if swaps.is_multiple_of(2) {
         1
     } else {
         -1
@@ -242,7 +242,7 @@ pub fn grade_of(mask: usize) -> usize {
 
 /// Sign of the reverse on grade `k`: `(-1)^{k(k-1)/2}`.
 pub fn reverse_sign(k: usize) -> i8 {
-    if (k * k.saturating_sub(1) / 2) % 2 == 0 {
+    if (k * k.saturating_sub(1) / 2).is_multiple_of(2) {
         1
     } else {
         -1
@@ -251,7 +251,7 @@ pub fn reverse_sign(k: usize) -> i8 {
 
 /// Sign of the grade involution on grade `k`: `(-1)^k`.
 pub fn involution_sign(k: usize) -> i8 {
-    if k % 2 == 0 {
+    if k.is_multiple_of(2) {
         1
     } else {
         -1
@@ -260,7 +260,7 @@ pub fn involution_sign(k: usize) -> i8 {
 
 /// Sign of the Clifford conjugate on grade `k`: `(-1)^{k(k+1)/2}`.
 pub fn conjugate_sign(k: usize) -> i8 {
-    if (k * (k + 1) / 2) % 2 == 0 {
+    if (k * (k + 1) / 2).is_multiple_of(2) {
         1
     } else {
         -1

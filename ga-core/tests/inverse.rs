@@ -44,7 +44,7 @@ fn reference_inverse(
 }
 
 fn is_even(mask: usize) -> bool {
-    mask.count_ones() % 2 == 0
+    mask.count_ones().is_multiple_of(2)
 }
 
 proptest! {

@@ -53,7 +53,7 @@ pub fn canonical_order(n: usize) -> Vec<Blade> {
 /// The sign change of reversion for a blade of grade `k`: `(-1)^(k(k-1)/2)`.
 pub fn reverse_sign(b: Blade) -> i32 {
     let k = grade(b);
-    if (k * k.saturating_sub(1) / 2) % 2 == 0 {
+    if (k * k.saturating_sub(1) / 2).is_multiple_of(2) {
         1
     } else {
         -1
@@ -62,7 +62,7 @@ pub fn reverse_sign(b: Blade) -> i32 {
 
 /// The sign change of the grade involution: `(-1)^k`.
 pub fn involution_sign(b: Blade) -> i32 {
-    if grade(b) % 2 == 0 {
+    if grade(b).is_multiple_of(2) {
         1
     } else {
         -1

@@ -638,7 +638,7 @@ mod tests {
 
     fn scale(r: &mut Lcg) -> (f64, bool) {
         let k = [0, 0, 0, -30, 40, -500, 500][(r.next() % 7) as usize];
-        (2f64.powi(k), r.next() % 4 == 0)
+        (2f64.powi(k), r.next().is_multiple_of(4))
     }
 
     fn nudge(p: Point3<f64>, on: bool) -> Point3<f64> {

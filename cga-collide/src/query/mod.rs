@@ -18,8 +18,8 @@
 //! signs come from [`crate::exact`].
 
 pub mod baseline;
-mod clearance;
 mod batch;
+mod clearance;
 mod collider;
 mod contact;
 mod containment;
@@ -55,5 +55,5 @@ pub use intersects::{
     intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
     IntersectsWith,
 };
-pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};
 pub use posed::PoseError;
+pub use self_intersection::{self_intersections, self_intersections_brute, self_intersects};
