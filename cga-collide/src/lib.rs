@@ -15,6 +15,25 @@
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
 //! | `testing` | test oracles and adversarial inputs (feature `testing`) |
 //!
+//! # Choosing a query
+//! | question | call |
+//! |---|---|
+//! | do two shapes (segment, triangle, sphere surface, ball) meet? | [`query::intersects_segment_triangle`] and the other `query::intersects_<a>_<b>`, or `a.intersects(&b)` |
+//! | which triangles of a mesh does a shape meet? | [`query::Collider::segment_hits`], `triangle_hits`, `sphere_hits`, `ball_hits` (`*_at` under a pose) |
+//! | do two meshes touch at these poses? | [`query::Collider::collides_at`] |
+//! | which triangle pairs intersect? | [`query::Collider::intersecting_pairs_at`] |
+//! | many poses at once, over the cores? | [`query::Collider::collides_batch`], [`query::Collider::intersecting_pairs_batch`] |
+//! | do two closed solids overlap (one may be inside the other)? | [`query::Collider::collides_solid_at`] |
+//! | are they within distance `c`? (exact, closed) | [`query::meshes_within_distance`], `query::within_distance_<a>_<b>` |
+//! | how far apart, and where? | [`query::mesh_distance`] (proved error bound), [`query::exact_mesh_distance`] |
+//! | how do they touch? | [`query::contact_class`], [`query::contact_geometry`] |
+//! | does a mesh cut itself? | [`query::self_intersections`] |
+//! | does a point lie in a closed mesh? | [`query::point_in_solid`], [`query::Collider::contains_point_at`] |
+//! | how do a line and a sphere meet (conformal)? | [`conformal::meet`] |
+//!
+//! The repository README has a quickstart (compiled as a doctest) and examples under
+//! `cga-collide/examples/`.
+//!
 //! Layers depend only on the layers above them in this table. Conventions (basis, blade order,
 //! signs, dual, null vectors, what touching means) are in the repository's
 //! `docs/conventions.md`.

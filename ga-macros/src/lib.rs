@@ -1,9 +1,9 @@
 //! `ga_macros::algebra!` turns one algebra declaration into Rust types whose products are
 //! blade-sparse, straight-line code generic over the coefficient type.
 //!
-//! The macro is organised in three stages: [`parse`](parse) reads the declaration (syn),
-//! [`model`](model) builds the algebra (blade products, result-type inference), and
-//! [`emit`](emit) writes the tokens (quote). The generated code names the runtime crate as
+//! The macro is organised in three stages: `parse` reads the declaration (syn),
+//! `model` builds the algebra (blade products, result-type inference), and
+//! `emit` writes the tokens (quote). The generated code names the runtime crate as
 //! `::ga_core`, so a crate using the macro depends on `ga-core` too.
 //!
 //! ```

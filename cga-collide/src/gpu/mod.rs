@@ -9,7 +9,7 @@
 //! carries a running error bound, plus the decision logic of the exact tests in [`crate::query`]. Every sign
 //! is certified on the device or reported as uncertain; a pair whose answer depends on an
 //! uncertain sign is *flagged* and re-decided on the CPU by the exact test
-//! ([`Intersects`](crate::Intersects)). So every answer equals the CPU's exact answer; the
+//! ([`crate::Intersects`]). So every answer equals the CPU's exact answer; the
 //! fraction flagged is reported ([`Batch::flagged`]).
 //!
 //! **Why the bound holds with or without fused multiply-adds.** Each operation charges
@@ -103,7 +103,7 @@ impl Precision {
 }
 
 /// The complete compute shader for `precision`: constants, the certified scalar and the
-/// decision logic ([`KERNELS`]), and the generated conformal algebra over that scalar.
+/// decision logic (the crate's `kernels.wgsl`), and the generated conformal algebra over that scalar.
 pub fn shader_source(precision: Precision) -> String {
     // naga has no `enable f64;`: the capability comes from the device feature.
     let prelude = precision.prelude();

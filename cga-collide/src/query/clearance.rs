@@ -239,7 +239,7 @@ fn centres_apart(c1: &P3, c2: &P3, big: f64, small: f64, c: f64) -> bool {
 
 /// Exact clearance test: is the distance between the closed sets at most `c`?
 pub trait WithinDistance<Rhs: ?Sized> {
-    /// Whether `dist(self, rhs) <= c`, exactly (see the [module docs](self) for `c` outside
+    /// Whether `dist(self, rhs) <= c`, exactly (see `query::within_distance_segment_segment` for `c` outside
     /// `[0, ∞)`).
     fn within_distance(&self, rhs: &Rhs, c: f64) -> bool;
 }

@@ -19,15 +19,15 @@
 
 pub mod baseline;
 mod batch;
-mod clearance;
+pub mod clearance;
 mod collider;
-mod contact;
+pub mod contact;
 mod containment;
 pub mod convex;
-mod distance;
+pub mod distance;
 mod intersects;
 mod proximity;
-mod self_intersection;
+pub mod self_intersection;
 
 pub use clearance::{
     mesh_pairs_within_distance, meshes_within_distance, within_distance_ball_ball,

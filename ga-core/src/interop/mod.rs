@@ -1,7 +1,7 @@
 //! Conversions to and from other math crates, behind optional features of `ga-core`.
 //!
-//! * `glam`: `DVec3`/`Vec3` ⇄ conformal points ([`cga::up`](crate::cga::up) /
-//!   [`cga::down`](crate::cga::down)) and `vga3` vectors; `DQuat` ⇄ rotors of `vga3` and
+//! * `glam`: `DVec3`/`Vec3` ⇄ conformal points ([`crate::cga::up`] /
+//!   [`crate::cga::down`]) and `vga3` vectors; `DQuat` ⇄ rotors of `vga3` and
 //!   `cga`; rigid `DAffine3` ⇄ `cga` motors (`Even`). See `interop::glam` (enabled by the
 //!   feature).
 //! * `mint`: `mint::Vector3`/`Point3`/`Quaternion` ⇄ the same types, for any crate speaking

@@ -1,6 +1,6 @@
 //! Symbolic scalars: multivariate polynomials with exact rational coefficients.
 //!
-//! [`Poly`] implements [`Ring`], so every generated product runs on it and expands formulas
+//! [`Poly`] implements [`Ring`](crate::scalar::Ring), so every generated product runs on it and expands formulas
 //! symbolically. Polynomials are kept in a canonical form (terms sorted by monomial, no zero
 //! coefficients), so `==` is structural equality of the mathematical polynomials.
 //!
@@ -19,7 +19,7 @@
 //! ```
 //!
 //! The same works for multivectors of the generated algebras, whose coefficients may be any
-//! [`Ring`]: build them from `Poly` coefficients and use the products as usual. Expanding
+//! [`Ring`](crate::scalar::Ring): build them from `Poly` coefficients and use the products as usual. Expanding
 //! `a ∧ b` for two symbolic conformal vectors, printed plainly, in LaTeX, and in the thesis's
 //! notation ([`thesis`]):
 //!
