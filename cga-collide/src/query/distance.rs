@@ -30,7 +30,9 @@
 //! assert!((d.distance - 0.3).abs() <= d.error_bound);
 //! assert_eq!(d.witness_b, p(0.2, 0.2, 0.3));
 //! let exact = query::exact_distance_triangle_triangle(&a, &b);
-//! assert_eq!(exact.distance2.to_string(), "5404319552844595/600479950316066816"); // 0.3² of the f64 0.3
+//! // Exactly the square of the f64 nearest to 0.3 (the z of b's first vertex).
+//! let z = cga_collide::ga_core::scalar::rational_from_f64(0.3).unwrap();
+//! assert_eq!(exact.distance2, &z * &z);
 //! # Ok::<(), cga_collide::GeometryError>(())
 //! ```
 
