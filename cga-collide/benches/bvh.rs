@@ -5,7 +5,7 @@
 
 use std::hint::black_box;
 
-use cga_collide::hierarchy::bvh::{BuildStrategy, Bvh};
+use cga_collide::bvh::{BuildStrategy, Bvh};
 use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Segment, Sphere};

@@ -10,8 +10,9 @@
 //! | [`exact`] | the bottom layer: certified signs of polynomial predicates, error-bounded `f64`, exact fall-backs |
 //! | [`shape`] | [`Segment`], [`Triangle`], [`Sphere`] (surface), [`Ball`] (solid), convex polyhedra, [`TriMesh`] and its loaders |
 //! | [`conformal`] | conformal primitives (points, point pairs, flat points, lines, circles, planes, spheres), versors, exact meets |
+//! | [`bvh`] | the box tree over a mesh's triangles that the mesh queries descend |
 //! | [`query`] | pairwise tests (`query::intersects_<a>_<b>`), plain-`f64` baselines, the convex test, mesh queries ([`query::Collider`]) |
-//! | [`hierarchy`] | bounding-volume hierarchy, the double outer/inner sphere tree, octree sphere trees |
+//! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
 //! | `testing` | test oracles and adversarial inputs (feature `testing`) |
 //!
@@ -51,6 +52,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bvh;
 pub mod conformal;
 pub mod error;
 pub mod exact;

@@ -1,7 +1,7 @@
 //! The hierarchy never misses a candidate, and both query modes give identical exact answers,
 //! on random placements including touching and coplanar contacts.
 
-use cga_collide::hierarchy::bvh::BuildStrategy;
+use cga_collide::bvh::BuildStrategy;
 use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};

@@ -28,7 +28,7 @@ use nalgebra::{Isometry3, Point3};
 
 use crate::query::ray_crosses_triangle;
 
-use crate::hierarchy::bvh::{triangle_box, Aabb, BuildStrategy, Bvh};
+use crate::bvh::{triangle_box, Aabb, BuildStrategy, Bvh};
 use crate::shape::mesh::{MeshError, TriMesh};
 use crate::{Ball, Intersects, Segment, Sphere, Triangle};
 

@@ -9,7 +9,7 @@
 //!   closest points): fast, not exact; baselines for benchmarks and comparisons.
 //! * [`convex`] decides whether two convex solids intersect (certified GJK).
 //! * [`Collider`] answers mesh queries (shape against mesh, mesh against mesh, containment)
-//!   with a [`Bvh`](crate::hierarchy::Bvh) or by brute force ([`Mode`]).
+//!   with a [`Bvh`](crate::bvh::Bvh) or by brute force ([`Mode`]).
 //! * [`posed`]: the same mesh queries under rigid poses (`*_at` methods of [`Collider`]), with
 //!   no per-pose work proportional to the mesh size, and the `*_batch` methods for many poses at once,
 //!   spread over the cores.

@@ -61,7 +61,7 @@ use std::ops::ControlFlow;
 use nalgebra::{Isometry3, Point3};
 use thiserror::Error;
 
-use crate::hierarchy::bvh::{Aabb, Bvh, MAX_LEAF};
+use crate::bvh::{Aabb, Bvh, MAX_LEAF};
 use crate::parallel::*;
 use crate::query::{ray_crosses_triangle, Collider};
 use crate::{Ball, Intersects, Segment, Sphere, Triangle};

@@ -5,7 +5,7 @@
 use std::collections::BinaryHeap;
 use std::ops::ControlFlow;
 
-use crate::hierarchy::bvh::{triangle_box, Aabb, Bvh};
+use crate::bvh::{triangle_box, Aabb, Bvh};
 use crate::shape::mesh::TriMesh;
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true

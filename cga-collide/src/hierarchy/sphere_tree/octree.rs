@@ -13,7 +13,7 @@
 //! # Cells, exactly
 //! A cell (closed box) is
 //! * **partial** when a triangle of the mesh meets it ([`triangle_meets_box`], exact;
-//!   candidates from the mesh's [`Bvh`](crate::hierarchy::bvh::Bvh));
+//!   candidates from the mesh's [`Bvh`](crate::bvh::Bvh));
 //! * otherwise wholly inside or wholly outside the solid (the cell is connected and no surface
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
 //!   **empty**.
@@ -51,7 +51,7 @@ use thiserror::Error;
 
 use super::tribox::triangle_meets_box;
 use super::{CellState, SphereTree};
-use crate::hierarchy::bvh::Aabb;
+use crate::bvh::Aabb;
 use crate::query::{Collider, Mode};
 
 /// The largest depth accepted (8^16 cells is far beyond memory anyway).
