@@ -39,7 +39,7 @@
 use ga_core::scalar::{rational_from_f64, Rational, Real, Ring};
 use nalgebra::Point3;
 
-use crate::query::clearance::{mesh_tri, meshes_within_distance, triangles_within, WithinDistance};
+use crate::query::clearance::{mesh_tri, triangles_within, WithinDistance};
 use crate::query::proximity::nearest_pair;
 use crate::query::{Collider, Intersects};
 use crate::shape::{Segment, Triangle};
@@ -411,21 +411,128 @@ pub fn exact_distance_triangle_triangle(a: &Triangle, b: &Triangle) -> ExactDist
 
 // ---------------------------------------------------------------- meshes
 
-/// The `f64` nearest pair of triangles of two meshes (branch and bound on the hierarchies).
-fn mesh_nearest(a: &Collider, b: &Collider) -> Option<(Near<f64>, u32, u32)> {
-    let (_, i, j) = nearest_pair((a.mesh(), a.bvh()), (b.mesh(), b.bvh()), |i, j, _best| {
-        triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j)).0
+/// `2⁻⁵³`, the unit roundoff.
+const U: f64 = f64::EPSILON / 2.0;
+/// Absolute allowance for underflow in a few products (far above `2⁻¹⁰⁷⁴` each).
+const TINY: f64 = 9.332636185032189e-302; // 2^-1000
+/// Below this squared length a direction is too small for a relative error analysis.
+const SMALL2: f64 = 1.0e-280;
+
+/// A **proved** lower bound on the distance between triangles `p` and `q` (for the real numbers
+/// the `f64` coordinates denote), from their projections on the direction `n` (any vector: the
+/// projection on a line is 1-Lipschitz, so the gap between the projected intervals divided by
+/// `|n|` never exceeds the distance). Every rounding is bounded: each dot product `fl(n·v)`
+/// is within `γ₃ Σ|nᵢ||vᵢ| < 3.01u·m` of `n·v` (`m` the largest such magnitude sum), the gap's
+/// subtraction adds at most `u·2m`, so `gap − 12u·m − TINY` is below the true gap; the norm,
+/// the division and the final product cost under `6u` relative, paid by the factor `1 − 16u`.
+/// Returns 0 when the projections overlap, or when anything is out of range (non-finite, or
+/// `n` so short that its square underflows).
+#[inline]
+fn separation_along(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> f64 {
+    let nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if !(nn >= SMALL2) || !nn.is_finite() {
+        return 0.0;
+    }
+    let proj = |v: &V<f64>| n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+    let mag = |v: &V<f64>| (n[0] * v[0]).abs() + (n[1] * v[1]).abs() + (n[2] * v[2]).abs();
+    let (mut pmin, mut pmax, mut qmin, mut qmax) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    let mut m = 0.0f64;
+    for v in p {
+        let s = proj(v);
+        pmin = pmin.min(s);
+        pmax = pmax.max(s);
+        m = m.max(mag(v));
+    }
+    for v in q {
+        let s = proj(v);
+        qmin = qmin.min(s);
+        qmax = qmax.max(s);
+        m = m.max(mag(v));
+    }
+    let gap = (qmin - pmax).max(pmin - qmax);
+    let g = gap - (12.0 * U * m + TINY);
+    let bound = g / nn.sqrt() * (1.0 - 16.0 * U);
+    if bound > 0.0 && bound.is_finite() {
+        bound
+    } else {
+        0.0
+    }
+}
+
+/// The normal `(b − a) × (c − a)` of a triangle, in `f64` (any rounding will do: it only
+/// chooses a projection direction for [`separation_along`]).
+#[inline]
+fn normal(t: &[V<f64>; 3]) -> V<f64> {
+    cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]))
+}
+
+/// Three times the centroid of a triangle, in `f64` (a direction for [`separation_along`]).
+#[inline]
+fn centroid3(t: &[V<f64>; 3]) -> V<f64> {
+    [
+        t[0][0] + t[1][0] + t[2][0],
+        t[0][1] + t[1][1] + t[2][1],
+        t[0][2] + t[1][2] + t[2][2],
+    ]
+}
+
+/// The outcome of the `f64` search over two meshes.
+struct MeshSearch {
+    /// The nearest pair found, with its `f64` squared distance and witnesses.
+    near: Near<f64>,
+    i: u32,
+    j: u32,
+    /// Every other examined pair whose proved lower bound (first field) did not exceed the best
+    /// squared distance at the time: the only pairs the lower end of the error bound must
+    /// still check exactly.
+    open: Vec<(f64, u32, u32)>,
+}
+
+/// The `f64` nearest pair of triangles of two meshes: best-first branch and bound on the
+/// hierarchies, pruning node and triangle pairs whose box distance exceeds the best so far.
+/// Each examined pair first gets a proved lower bound from the separation along the line of
+/// the centroids and along the two normals; only when that does not beat the best so far is the `f64` closest-points
+/// routine run, and its witnesses' direction gives a further proved bound. Pairs whose proved
+/// bound stays at or below the best are kept in [`MeshSearch::open`].
+fn mesh_search(a: &Collider, b: &Collider) -> Option<MeshSearch> {
+    let mut open = Vec::new();
+    let (_, i, j) = nearest_pair((a.mesh(), a.bvh()), (b.mesh(), b.bvh()), |x, y, best| {
+        let (p, q) = (mesh_tri(a, x), mesh_tri(b, y));
+        // Cheap proved bounds first: along the line of the centroids (the best filter for
+        // small triangles far apart), then along the two normals.
+        let mut lb = 0.0f64;
+        for n in [sub(&centroid3(&q), &centroid3(&p)), normal(&p), normal(&q)] {
+            lb = lb.max(separation_along(&n, &p, &q));
+            if lb * lb > best {
+                return f64::INFINITY; // proved farther than the best so far
+            }
+        }
+        let (d2, wx, wy) = triangle_triangle(&p, &q);
+        let lb = lb.max(separation_along(&sub(&wy, &wx), &p, &q));
+        if !(lb * lb > best.min(d2)) {
+            open.push((lb, x, y));
+        }
+        d2
     })?;
-    Some((triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j)), i, j))
+    let near = triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j));
+    Some(MeshSearch { near, i, j, open })
 }
 
 /// The minimum distance between the surfaces of two meshes (in the same frame, see
 /// [`Collider::placed`]), with witnesses, the triangle pair `(i, j)` attaining it and a
 /// certified error bound; `None` if a mesh has no triangles.
 ///
-/// The bound is proved over **all** triangle pairs (the lower end with the exact mesh clearance
-/// test [`meshes_within_distance`], the upper end with the exact test of the pair found), so
-/// it holds for the meshes' true distance even when several pairs nearly tie.
+/// The bound is proved over **all** triangle pairs, so it holds for the meshes' true distance
+/// even when several pairs nearly tie. The upper end: the exact clearance test of the pair
+/// found. The lower end: every other pair is either pruned by its box distance (a rounding
+/// margin of `1e-9` relative), or proved farther by an `f64` separation bound with every
+/// rounding accounted for, or decided by the exact clearance test (the few pairs whose proved
+/// bound does not beat the best `f64` distance: the winner and near-ties).
 ///
 /// ```
 /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
@@ -436,7 +543,12 @@ fn mesh_nearest(a: &Collider, b: &Collider) -> Option<(Near<f64>, u32, u32)> {
 /// # Ok::<(), cga_collide::mesh::MeshError>(())
 /// ```
 pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
-    let ((d2, x, y), i, j) = mesh_nearest(a, b)?;
+    let MeshSearch {
+        near: (d2, x, y),
+        i,
+        j,
+        open,
+    } = mesh_search(a, b)?;
     let (s, t) = (mesh_tri(a, i), mesh_tri(b, j));
     let distance = d2.sqrt();
     let error_bound = certify(
@@ -444,7 +556,14 @@ pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
         scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
         || triangles_within(&s, &t, 0.0),
         |c| triangles_within(&s, &t, c),
-        |c| meshes_within_distance(a, b, c),
+        // Every pair not in `open` is proved farther than the best `f64` squared distance,
+        // hence than any `c` the certification tries (`c < distance`): only `open` can
+        // bring the distance down to `c`.
+        |c| {
+            open.iter().any(|&(lb, x, y)| {
+                !(lb > c) && triangles_within(&mesh_tri(a, x), &mesh_tri(b, y), c)
+            })
+        },
     );
     Some(Distance {
         distance,

@@ -2,6 +2,7 @@
 //! mesh distance and self-intersection. Only the public shape of [`Bvh`] (nodes and leaf order)
 //! is used; triangle boxes are recomputed from the mesh (exact `min`/`max`).
 
+use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::ops::ControlFlow;
 
@@ -98,26 +99,12 @@ pub(crate) fn for_each_near_pair<B>(
     ControlFlow::Continue(())
 }
 
-/// A node pair in the best-first distance search, ordered by its box distance (smallest first).
-#[derive(PartialEq)]
-struct Entry(f64, usize, usize);
-impl Eq for Entry {}
-impl PartialOrd for Entry {
-    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Entry {
-    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        other.0.total_cmp(&self.0)
-    }
-}
-
-/// Branch and bound: visits triangle pairs nearest boxes first; `pair(i, j, best)` returns the
-/// pair's squared distance (it may return early with anything `>= best` when it can tell the
-/// pair is no better). Node pairs whose box distance exceeds the best found so far (times
-/// `1 + 1e-9`, for the boxes' rounding) are skipped. Returns the best squared distance and
-/// its pair, `None` for an empty mesh.
+/// Branch and bound: visits node pairs nearest boxes first (best first); `pair(i, j, best)`
+/// returns the pair's squared distance (or anything `>= best` when it can tell the pair is no
+/// better). Node and triangle pairs whose box distance exceeds the best found so far (times
+/// `1 + 1e-9`, far above the boxes' rounding) are skipped, so every skipped pair is truly
+/// farther than the best `f64` value returned. Returns the best squared distance and its pair,
+/// `None` for an empty mesh.
 pub(crate) fn nearest_pair(
     (ma, ta): (&TriMesh, &Bvh),
     (mb, tb): (&TriMesh, &Bvh),
@@ -129,45 +116,45 @@ pub(crate) fn nearest_pair(
     }
     let mut best = (f64::INFINITY, 0u32, 0u32);
     let prune = |d2: f64, best: f64| d2 * (1.0 - 1e-9) > best;
+    // Squared distances are never negative (nor NaN for finite boxes), so their bit patterns
+    // order like the values: the heap compares integers.
+    let key = |d2: f64| Reverse(d2.to_bits());
     let mut heap = BinaryHeap::with_capacity(256);
-    heap.push(Entry(box_distance2(&na[0].bounds, &nb[0].bounds), 0, 0));
-    while let Some(Entry(d2, i, j)) = heap.pop() {
-        if prune(d2, best.0) {
+    heap.push((key(box_distance2(&na[0].bounds, &nb[0].bounds)), 0u32, 0u32));
+    while let Some((Reverse(bits), i, j)) = heap.pop() {
+        if prune(f64::from_bits(bits), best.0) {
             break; // everything left is farther
         }
-        let (a, b) = (&na[i], &nb[j]);
-        match (a.is_leaf(), b.is_leaf()) {
-            (true, true) => {
-                let (sa, sb) = (a.start as usize, b.start as usize);
-                for &x in &ta.order()[sa..sa + a.count as usize] {
-                    let bx = tri_box(ma, x);
-                    for &y in &tb.order()[sb..sb + b.count as usize] {
-                        if prune(box_distance2(&bx, &tri_box(mb, y)), best.0) {
-                            continue;
-                        }
-                        let d = pair(x, y, best.0);
-                        if d < best.0 {
-                            best = (d, x, y);
-                        }
+        let (a, b) = (&na[i as usize], &nb[j as usize]);
+        if a.is_leaf() && b.is_leaf() {
+            let (sa, sb) = (a.start as usize, b.start as usize);
+            for &x in &ta.order()[sa..sa + a.count as usize] {
+                let bx = tri_box(ma, x);
+                if prune(box_distance2(&bx, &b.bounds), best.0) {
+                    continue;
+                }
+                for &y in &tb.order()[sb..sb + b.count as usize] {
+                    if prune(box_distance2(&bx, &tri_box(mb, y)), best.0) {
+                        continue;
+                    }
+                    let d = pair(x, y, best.0);
+                    if d < best.0 {
+                        best = (d, x, y);
                     }
                 }
             }
-            _ => {
-                let split_a =
-                    !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
-                let children = if split_a {
-                    let s = a.start as usize;
-                    [(s, j), (s + 1, j)]
-                } else {
-                    let s = b.start as usize;
-                    [(i, s), (i, s + 1)]
-                };
-                for (ci, cj) in children {
-                    let d = box_distance2(&na[ci].bounds, &nb[cj].bounds);
-                    if !prune(d, best.0) {
-                        heap.push(Entry(d, ci, cj));
-                    }
-                }
+            continue;
+        }
+        let split_a = !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
+        let children = if split_a {
+            [(a.start, j), (a.start + 1, j)]
+        } else {
+            [(i, b.start), (i, b.start + 1)]
+        };
+        for (ci, cj) in children {
+            let d = box_distance2(&na[ci as usize].bounds, &nb[cj as usize].bounds);
+            if !prune(d, best.0) {
+                heap.push((key(d), ci, cj));
             }
         }
     }
