@@ -122,6 +122,35 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(6))]
+
+    /// Translations only, by multiples of 1/4: parallel faces, so many triangle pairs tie for
+    /// the minimum (and touching placements give 0). The pruning must not lose the minimum.
+    #[test]
+    fn mesh_distance_with_ties_within_its_bound(
+        t in (-12i32..=12, -12i32..=12, -12i32..=12),
+    ) {
+        let cube = Collider::new(
+            TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.)).unwrap());
+        let v = Vector3::new(f64::from(t.0), f64::from(t.1), f64::from(t.2)) * 0.25;
+        let moved = cube.placed(&Isometry3::translation(v.x, v.y, v.z)).unwrap();
+        // Brute force with the exact pairwise distance (checked against the oracle above).
+        let tri = |c: &Collider, i| {
+            let [a, b, c] = c.mesh().triangle(i);
+            Triangle::new(a, b, c).unwrap()
+        };
+        let exact = (0..12)
+            .flat_map(|i| (0..12).map(move |j| (i, j)))
+            .map(|(i, j)| query::exact_distance_triangle_triangle(&tri(&cube, i), &tri(&moved, j)).distance2)
+            .min()
+            .unwrap();
+        let d = query::mesh_distance(&cube, &moved).unwrap();
+        within_bound(&d, &exact)?;
+        prop_assert_eq!(query::exact_mesh_distance(&cube, &moved).unwrap().distance2, exact);
+    }
+}
+
 #[test]
 fn touching_and_intersecting_have_bound_zero() {
     let p = |x, y, z| Point3::new(x, y, z);

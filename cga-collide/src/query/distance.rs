@@ -418,20 +418,23 @@ const TINY: f64 = 9.332636185032189e-302; // 2^-1000
 /// Below this squared length a direction is too small for a relative error analysis.
 const SMALL2: f64 = 1.0e-280;
 
-/// A **proved** lower bound on the distance between triangles `p` and `q` (for the real numbers
-/// the `f64` coordinates denote), from their projections on the direction `n` (any vector: the
-/// projection on a line is 1-Lipschitz, so the gap between the projected intervals divided by
-/// `|n|` never exceeds the distance). Every rounding is bounded: each dot product `fl(n·v)`
-/// is within `γ₃ Σ|nᵢ||vᵢ| < 3.01u·m` of `n·v` (`m` the largest such magnitude sum), the gap's
-/// subtraction adds at most `u·2m`, so `gap − 12u·m − TINY` is below the true gap; the norm,
-/// the division and the final product cost under `6u` relative, paid by the factor `1 − 16u`.
-/// Returns 0 when the projections overlap, or when anything is out of range (non-finite, or
-/// `n` so short that its square underflows).
+/// The separation of triangles `p` and `q` along a direction `n` (any vector), as a pair
+/// `(g, nn)`: the distance is **proved** (for the real numbers the `f64` coordinates denote)
+/// to be at least `g / √nn`, from the gap between the projections of the triangles on `n`
+/// (projection on a line is 1-Lipschitz, so that gap divided by `|n|` never exceeds the
+/// distance).
+///
+/// Roundings: each dot product `fl(n·v)` is within `γ₃ Σ|nᵢ||vᵢ| < 3.01u·m` of `n·v` (`m` the
+/// largest such magnitude sum over the six vertices, itself computed within `γ₃`), and the
+/// gap's subtraction adds at most `u·2m`; so `g = fl(gap − (12u·m + TINY))` is at most the true
+/// gap times `1 + u` (`TINY` pays for underflowing products). `nn = fl(n·n)` is within `γ₃` of
+/// `|n|²`. `None` when the projections overlap, or anything is out of range (non-finite, or `n`
+/// so short that `nn` could underflow).
 #[inline]
-fn separation_along(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> f64 {
+fn separation(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Option<(f64, f64)> {
     let nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    if !(nn >= SMALL2) || !nn.is_finite() {
-        return 0.0;
+    if !(nn >= SMALL2 && nn.is_finite()) {
+        return None;
     }
     let proj = |v: &V<f64>| n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
     let mag = |v: &V<f64>| (n[0] * v[0]).abs() + (n[1] * v[1]).abs() + (n[2] * v[2]).abs();
@@ -454,24 +457,32 @@ fn separation_along(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> f64 {
         qmax = qmax.max(s);
         m = m.max(mag(v));
     }
-    let gap = (qmin - pmax).max(pmin - qmax);
-    let g = gap - (12.0 * U * m + TINY);
-    let bound = g / nn.sqrt() * (1.0 - 16.0 * U);
-    if bound > 0.0 && bound.is_finite() {
-        bound
-    } else {
-        0.0
-    }
+    let g = (qmin - pmax).max(pmin - qmax) - (12.0 * U * m + TINY);
+    (g > 0.0 && g.is_finite()).then_some((g, nn))
+}
+
+/// Whether a separation `(g, nn)` proves the distance squared above `best`: `g² > best·nn`
+/// with a relative margin `16u` that pays for `g` (`1 + u`), `nn` (`γ₃`) and the two products.
+#[inline]
+fn separated_beyond((g, nn): (f64, f64), best: f64) -> bool {
+    g * g * (1.0 - 16.0 * U) > best * nn
+}
+
+/// The proved lower bound `g / √nn` of a separation, rounded down (the square root, the
+/// division and `nn` cost under `4u` relative, paid by the factor `1 − 8u`).
+#[inline]
+fn separation_bound((g, nn): (f64, f64)) -> f64 {
+    g / nn.sqrt() * (1.0 - 8.0 * U)
 }
 
 /// The normal `(b − a) × (c − a)` of a triangle, in `f64` (any rounding will do: it only
-/// chooses a projection direction for [`separation_along`]).
+/// chooses a projection direction for [`separation`]).
 #[inline]
 fn normal(t: &[V<f64>; 3]) -> V<f64> {
     cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]))
 }
 
-/// Three times the centroid of a triangle, in `f64` (a direction for [`separation_along`]).
+/// Three times the centroid of a triangle, in `f64` (a direction for [`separation`]).
 #[inline]
 fn centroid3(t: &[V<f64>; 3]) -> V<f64> {
     [
@@ -505,16 +516,28 @@ fn mesh_search(a: &Collider, b: &Collider) -> Option<MeshSearch> {
         let (p, q) = (mesh_tri(a, x), mesh_tri(b, y));
         // Cheap proved bounds first: along the line of the centroids (the best filter for
         // small triangles far apart), then along the two normals.
-        let mut lb = 0.0f64;
-        for n in [sub(&centroid3(&q), &centroid3(&p)), normal(&p), normal(&q)] {
-            lb = lb.max(separation_along(&n, &p, &q));
-            if lb * lb > best {
+        let mut seps = [None; 4];
+        for (k, n) in [sub(&centroid3(&q), &centroid3(&p)), normal(&p), normal(&q)]
+            .iter()
+            .enumerate()
+        {
+            seps[k] = separation(n, &p, &q);
+            if seps[k].is_some_and(|s| separated_beyond(s, best)) {
                 return f64::INFINITY; // proved farther than the best so far
             }
         }
         let (d2, wx, wy) = triangle_triangle(&p, &q);
-        let lb = lb.max(separation_along(&sub(&wy, &wx), &p, &q));
-        if !(lb * lb > best.min(d2)) {
+        seps[3] = separation(&sub(&wy, &wx), &p, &q);
+        if !seps
+            .iter()
+            .flatten()
+            .any(|&s| separated_beyond(s, best.min(d2)))
+        {
+            let lb = seps
+                .iter()
+                .flatten()
+                .map(|&s| separation_bound(s))
+                .fold(0.0, f64::max);
             open.push((lb, x, y));
         }
         d2
@@ -592,4 +615,85 @@ pub fn exact_mesh_distance(a: &Collider, b: &Collider) -> Option<ExactDistance> 
         }
     }
     best.map(|(near, i, j)| exact(near, Some((i, j))))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn coord() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            2 => (-3i32..=3).prop_map(f64::from),
+            3 => -3.0f64..3.0,
+            1 => (-3.0f64..3.0).prop_map(|x| x * 1e-9),
+            1 => (-3.0f64..3.0).prop_map(|x| x * 1e150),
+        ]
+    }
+
+    fn point() -> impl Strategy<Value = V<f64>> {
+        [coord(), coord(), coord()]
+    }
+
+    fn triangle() -> impl Strategy<Value = [V<f64>; 3]> {
+        [point(), point(), point()]
+    }
+
+    fn exact2(p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Rational {
+        triangle_triangle(&p.map(|v| qv(&v)), &q.map(|v| qv(&v))).0
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(20))]
+
+        /// The separation along any direction (random, normals, centroids, the `f64` witnesses'
+        /// direction) is a proved lower bound: checked against the exact rational distance, for
+        /// the bound itself and for the squared comparison used to prune.
+        #[test]
+        fn separation_never_exceeds_the_exact_distance(
+            p in triangle(),
+            q in triangle(),
+            n in point(),
+            shift in point(),
+        ) {
+            // Also a copy of q moved away, so that separated pairs are frequent.
+            let far = q.map(|v| [v[0] + shift[0], v[1] + shift[1], v[2] + shift[2]]);
+            for q in [q, far] {
+                let exact = exact2(&p, &q);
+                let (_, wx, wy) = triangle_triangle(&p, &q);
+                for n in [n, normal(&p), normal(&q), sub(&centroid3(&q), &centroid3(&p)), sub(&wy, &wx)] {
+                    let Some(s) = separation(&n, &p, &q) else { continue };
+                    let lb = separation_bound(s);
+                    prop_assert!(lb >= 0.0);
+                    prop_assert!(q_sq(lb) <= exact, "bound {lb} above the distance");
+                    // Pruning: proved beyond `best` only if the exact distance is.
+                    let e = Real::to_f64(&exact);
+                    for best in [e, e.next_down(), e.next_up(), e * (1.0 - 1e-15), lb * lb] {
+                        if best.is_finite() && separated_beyond(s, best) {
+                            prop_assert!(exact > rational_from_f64(best).unwrap());
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    fn q_sq(x: f64) -> Rational {
+        let r = q(x);
+        &r * &r
+    }
+
+    #[test]
+    fn separation_of_far_apart_triangles_is_nearly_their_distance() {
+        let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let q = p.map(|v| [v[0], v[1], v[2] + 0.5]);
+        let s = separation(&normal(&p), &p, &q).unwrap();
+        let lb = separation_bound(s);
+        assert!(lb <= 0.5 && lb > 0.5 * (1.0 - 1e-14), "{lb}");
+        // Overlapping projections and degenerate directions give nothing.
+        assert_eq!(separation(&[1.0, 0.0, 0.0], &p, &q), None);
+        assert_eq!(separation(&[0.0, 0.0, 0.0], &p, &q), None);
+        assert_eq!(separation(&[f64::NAN, 0.0, 1.0], &p, &q), None);
+        assert_eq!(separation(&[0.0, 0.0, 1e300], &p, &q), None);
+    }
 }
