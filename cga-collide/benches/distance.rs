@@ -1,6 +1,8 @@
 //! Mesh distance (`query::mesh_distance`, certified bound included) against parry3d's
-//! `query::distance` on the same placements, and exact self-intersection (tree) against the
-//! brute-force all-pairs scan, in the same run.
+//! `query::distance` (0.20, and the latest release 0.31) on the same placements, and exact
+//! self-intersection (tree) against the brute-force all-pairs scan, in the same run. coal's
+//! figures for the same placements come from `benches/coal_distance.py` (Python), run right
+//! after.
 //!
 //! `cargo bench -p cga-collide --bench distance -- --warm-up-time 1 --measurement-time 3`
 
@@ -11,6 +13,8 @@ use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use nalgebra::{Isometry3, Vector3};
 use parry3d_f64::shape::TriMesh as ParryMesh;
+use parry3d_latest::math::{Pose, Vector};
+use parry3d_latest::shape::TriMesh as LatestMesh;
 
 /// Non-colliding placements of the unit-scaled armadillo beside bunny00 (B translated and
 /// turned; the same transformed coordinates for both libraries).
@@ -20,22 +24,37 @@ const PLACEMENTS: [([f64; 3], [f64; 3]); 3] = [
     ([0.9, 0.6, -0.3], [0.0, 1.0, 0.0]),
 ];
 
+fn latest_mesh(m: &TriMesh) -> LatestMesh {
+    let v = m
+        .vertices()
+        .iter()
+        .map(|p| Vector::new(p.x, p.y, p.z))
+        .collect();
+    LatestMesh::new(v, m.triangles().to_vec()).unwrap()
+}
+
 fn distance(c: &mut Criterion) {
     let a = Collider::new(TriMesh::bunny00().unit());
     let arm = TriMesh::armadillo().unit();
     let pa = ParryMesh::new(a.mesh().vertices().to_vec(), a.mesh().triangles().to_vec()).unwrap();
+    let la = latest_mesh(a.mesh());
+    let lid = Pose::IDENTITY;
     let id = Isometry3::identity();
     let mut g = c.benchmark_group("mesh_distance_bunny00_x_armadillo");
+    // parry3d takes a tenth of a second per query: the minimum sample count keeps the run short.
+    g.sample_size(10);
     for (k, (t, r)) in PLACEMENTS.iter().enumerate() {
         let iso = Isometry3::new(Vector3::from(*t), Vector3::from(*r));
         let b = Collider::new(arm.transformed(&iso).unwrap());
         let pb =
             ParryMesh::new(b.mesh().vertices().to_vec(), b.mesh().triangles().to_vec()).unwrap();
         let ours = query::mesh_distance(&a, &b).unwrap();
+        let lb = latest_mesh(b.mesh());
         let parry = parry3d_f64::query::distance(&id, &pa, &id, &pb);
+        let latest = parry3d_latest::query::distance(&lid, &la, &lid, &lb);
         eprintln!(
-            "placement {k}: cga {} ± {:.1e} (triangles {:?}); parry3d {:?}",
-            ours.distance, ours.error_bound, ours.triangles, parry
+            "placement {k}: cga {} ± {:.1e} (triangles {:?}); parry3d 0.20 {:?}; parry3d 0.31 {:?}",
+            ours.distance, ours.error_bound, ours.triangles, parry, latest
         );
         g.bench_with_input(BenchmarkId::new("cga_certified", k), &(), |bch, _| {
             bch.iter(|| query::mesh_distance(black_box(&a), black_box(&b)))
@@ -43,6 +62,13 @@ fn distance(c: &mut Criterion) {
         if parry.is_ok() {
             g.bench_with_input(BenchmarkId::new("parry3d", k), &(), |bch, _| {
                 bch.iter(|| parry3d_f64::query::distance(&id, black_box(&pa), &id, black_box(&pb)))
+            });
+        }
+        if latest.is_ok() {
+            g.bench_with_input(BenchmarkId::new("parry3d_0_31", k), &(), |bch, _| {
+                bch.iter(|| {
+                    parry3d_latest::query::distance(&lid, black_box(&la), &lid, black_box(&lb))
+                })
             });
         }
     }

@@ -512,36 +512,39 @@ struct MeshSearch {
 /// bound stays at or below the best are kept in [`MeshSearch::open`].
 fn mesh_search(a: &Collider, b: &Collider) -> Option<MeshSearch> {
     let mut open = Vec::new();
-    let (_, i, j) = nearest_pair((a.mesh(), a.bvh()), (b.mesh(), b.bvh()), |x, y, best| {
-        let (p, q) = (mesh_tri(a, x), mesh_tri(b, y));
-        // Cheap proved bounds first: along the line of the centroids (the best filter for
-        // small triangles far apart), then along the two normals.
-        let mut seps = [None; 4];
-        for (k, n) in [sub(&centroid3(&q), &centroid3(&p)), normal(&p), normal(&q)]
-            .iter()
-            .enumerate()
-        {
-            seps[k] = separation(n, &p, &q);
-            if seps[k].is_some_and(|s| separated_beyond(s, best)) {
-                return f64::INFINITY; // proved farther than the best so far
+    let (_, i, j) = nearest_pair(
+        (a.mesh(), a.bvh()),
+        (b.mesh(), b.bvh()),
+        |x, p, y, q, best| {
+            // Cheap proved bounds first: along the line of the centroids (the best filter for
+            // small triangles far apart), then along the two normals.
+            let mut seps = [None; 4];
+            for (k, n) in [sub(&centroid3(q), &centroid3(p)), normal(p), normal(q)]
+                .iter()
+                .enumerate()
+            {
+                seps[k] = separation(n, p, q);
+                if seps[k].is_some_and(|s| separated_beyond(s, best)) {
+                    return f64::INFINITY; // proved farther than the best so far
+                }
             }
-        }
-        let (d2, wx, wy) = triangle_triangle(&p, &q);
-        seps[3] = separation(&sub(&wy, &wx), &p, &q);
-        if !seps
-            .iter()
-            .flatten()
-            .any(|&s| separated_beyond(s, best.min(d2)))
-        {
-            let lb = seps
+            let (d2, wx, wy) = triangle_triangle(p, q);
+            seps[3] = separation(&sub(&wy, &wx), p, q);
+            if !seps
                 .iter()
                 .flatten()
-                .map(|&s| separation_bound(s))
-                .fold(0.0, f64::max);
-            open.push((lb, x, y));
-        }
-        d2
-    })?;
+                .any(|&s| separated_beyond(s, best.min(d2)))
+            {
+                let lb = seps
+                    .iter()
+                    .flatten()
+                    .map(|&s| separation_bound(s))
+                    .fold(0.0, f64::max);
+                open.push((lb, x, y));
+            }
+            d2
+        },
+    )?;
     let near = triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j));
     Some(MeshSearch { near, i, j, open })
 }

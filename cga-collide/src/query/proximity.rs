@@ -6,7 +6,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::ops::ControlFlow;
 
-use crate::bvh::{triangle_box, Aabb, Bvh};
+use crate::bvh::{triangle_box, Aabb, Bvh, MAX_LEAF};
 use crate::shape::mesh::TriMesh;
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true
@@ -99,8 +99,29 @@ pub(crate) fn for_each_near_pair<B>(
     ControlFlow::Continue(())
 }
 
-/// Branch and bound: visits node pairs nearest boxes first (best first); `pair(i, j, best)`
-/// returns the pair's squared distance (or anything `>= best` when it can tell the pair is no
+/// The corners of a triangle of a mesh as raw coordinates.
+pub(crate) type Corners = [[f64; 3]; 3];
+
+/// The corners of triangle `t` of `mesh`.
+#[inline]
+fn corners(mesh: &TriMesh, t: u32) -> Corners {
+    mesh.triangle(t as usize).map(|p| [p.x, p.y, p.z])
+}
+
+/// The box of a triangle's corners (exact `min`/`max`).
+#[inline]
+fn corners_box(t: &Corners) -> Aabb {
+    let mut b = Aabb::EMPTY;
+    for k in 0..3 {
+        b.min[k] = t[0][k].min(t[1][k]).min(t[2][k]);
+        b.max[k] = t[0][k].max(t[1][k]).max(t[2][k]);
+    }
+    b
+}
+
+/// Branch and bound: visits node pairs nearest boxes first (best first);
+/// `pair(i, p, j, q, best)` gets triangles `i` of `ma` and `j` of `mb` with their corners and
+/// returns their squared distance (or anything `>= best` when it can tell the pair is no
 /// better). Node and triangle pairs whose box distance exceeds the best found so far (times
 /// `1 + 1e-9`, far above the boxes' rounding) are skipped, so every skipped pair is truly
 /// farther than the best `f64` value returned. Returns the best squared distance and its pair,
@@ -108,7 +129,7 @@ pub(crate) fn for_each_near_pair<B>(
 pub(crate) fn nearest_pair(
     (ma, ta): (&TriMesh, &Bvh),
     (mb, tb): (&TriMesh, &Bvh),
-    mut pair: impl FnMut(u32, u32, f64) -> f64,
+    mut pair: impl FnMut(u32, &Corners, u32, &Corners, f64) -> f64,
 ) -> Option<(f64, u32, u32)> {
     let (na, nb) = (ta.nodes(), tb.nodes());
     if ma.num_triangles() == 0 || mb.num_triangles() == 0 {
@@ -121,6 +142,7 @@ pub(crate) fn nearest_pair(
     let key = |d2: f64| Reverse(d2.to_bits());
     let mut heap = BinaryHeap::with_capacity(256);
     heap.push((key(box_distance2(&na[0].bounds, &nb[0].bounds)), 0u32, 0u32));
+    let mut leaf_b: Vec<(u32, Corners, Aabb)> = Vec::with_capacity(MAX_LEAF);
     while let Some((Reverse(bits), i, j)) = heap.pop() {
         if prune(f64::from_bits(bits), best.0) {
             break; // everything left is farther
@@ -128,18 +150,24 @@ pub(crate) fn nearest_pair(
         let (a, b) = (&na[i as usize], &nb[j as usize]);
         if a.is_leaf() && b.is_leaf() {
             let (sa, sb) = (a.start as usize, b.start as usize);
+            leaf_b.clear();
+            leaf_b.extend(tb.order()[sb..sb + b.count as usize].iter().map(|&y| {
+                let q = corners(mb, y);
+                (y, q, corners_box(&q))
+            }));
             for &x in &ta.order()[sa..sa + a.count as usize] {
-                let bx = tri_box(ma, x);
+                let p = corners(ma, x);
+                let bx = corners_box(&p);
                 if prune(box_distance2(&bx, &b.bounds), best.0) {
                     continue;
                 }
-                for &y in &tb.order()[sb..sb + b.count as usize] {
-                    if prune(box_distance2(&bx, &tri_box(mb, y)), best.0) {
+                for (y, q, by) in &leaf_b {
+                    if prune(box_distance2(&bx, by), best.0) {
                         continue;
                     }
-                    let d = pair(x, y, best.0);
+                    let d = pair(x, &p, *y, q, best.0);
                     if d < best.0 {
-                        best = (d, x, y);
+                        best = (d, x, *y);
                     }
                 }
             }
