@@ -581,9 +581,8 @@ pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
         // hence than any `c` the certification tries (`c < distance`): only `open` can
         // bring the distance down to `c`.
         |c| {
-            open.iter().any(|&(lb, x, y)| {
-                !(lb > c) && triangles_within(&mesh_tri(a, x), &mesh_tri(b, y), c)
-            })
+            open.iter()
+                .any(|&(lb, x, y)| lb <= c && triangles_within(&mesh_tri(a, x), &mesh_tri(b, y), c))
         },
     );
     Some(Distance {

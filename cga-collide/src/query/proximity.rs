@@ -111,12 +111,10 @@ fn corners(mesh: &TriMesh, t: u32) -> Corners {
 /// The box of a triangle's corners (exact `min`/`max`).
 #[inline]
 fn corners_box(t: &Corners) -> Aabb {
-    let mut b = Aabb::EMPTY;
-    for k in 0..3 {
-        b.min[k] = t[0][k].min(t[1][k]).min(t[2][k]);
-        b.max[k] = t[0][k].max(t[1][k]).max(t[2][k]);
+    Aabb {
+        min: std::array::from_fn(|k| t[0][k].min(t[1][k]).min(t[2][k])),
+        max: std::array::from_fn(|k| t[0][k].max(t[1][k]).max(t[2][k])),
     }
-    b
 }
 
 /// Branch and bound: visits node pairs nearest boxes first (best first);
@@ -143,7 +141,8 @@ pub(crate) fn nearest_pair(
     let mut heap = BinaryHeap::with_capacity(256);
     heap.push((key(box_distance2(&na[0].bounds, &nb[0].bounds)), 0u32, 0u32));
     let mut leaf_b: Vec<(u32, Corners, Aabb)> = Vec::with_capacity(MAX_LEAF);
-    while let Some((Reverse(bits), i, j)) = heap.pop() {
+    let mut next = heap.pop();
+    while let Some((Reverse(bits), i, j)) = next.take() {
         if prune(f64::from_bits(bits), best.0) {
             break; // everything left is farther
         }
@@ -171,6 +170,7 @@ pub(crate) fn nearest_pair(
                     }
                 }
             }
+            next = heap.pop();
             continue;
         }
         let split_a = !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
@@ -179,11 +179,25 @@ pub(crate) fn nearest_pair(
         } else {
             [(i, b.start), (i, b.start + 1)]
         };
+        // A child that would be popped next anyway (nearest of all) is descended at once,
+        // without a trip through the heap; the order stays best first.
         for (ci, cj) in children {
             let d = box_distance2(&na[ci as usize].bounds, &nb[cj as usize].bounds);
-            if !prune(d, best.0) {
-                heap.push((key(d), ci, cj));
+            if prune(d, best.0) {
+                continue;
             }
+            let entry = (key(d), ci, cj);
+            match next {
+                None if heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
+                Some(n) if entry > n => {
+                    heap.push(n);
+                    next = Some(entry);
+                }
+                _ => heap.push(entry),
+            }
+        }
+        if next.is_none() {
+            next = heap.pop();
         }
     }
     Some(best)
