@@ -4,7 +4,9 @@ distances, for comparison with `cga distance` (same coordinates: both meshes sca
 same f64 operations as `TriMesh::unit`, B turned and translated; coal gets the transformed
 vertices with identity poses).
 
-Not part of CI. Needs `pip install coal numpy`. From the repository root:
+`millis` is the best of the repeats, `median_millis` and `mean_millis` the middle and the
+average (criterion's figures for `cga` are means). Not part of CI. Needs `pip install coal
+numpy`. From the repository root:
 
     python3 cga-collide/benches/coal_distance.py [--repeat N]
 
@@ -55,15 +57,23 @@ def main():
     for t, r in PLACEMENTS:
         vb = unit(vb0) @ rotation(r).T + np.array(t)
         mb = model(vb, tb)
-        best, dist = float("inf"), None
+        times, dist = [], None
         for _ in range(args.repeat):
             req = coal.DistanceRequest()
             res = coal.DistanceResult()
             t0 = time.perf_counter()
             coal.distance(ma, identity, mb, identity, req, res)
-            best = min(best, time.perf_counter() - t0)
+            times.append(time.perf_counter() - t0)
             dist = res.min_distance
-        out.append({"translate": t, "rotate": r, "distance": dist, "millis": best * 1e3})
+        times.sort()
+        out.append({
+            "translate": t,
+            "rotate": r,
+            "distance": dist,
+            "millis": times[0] * 1e3,
+            "median_millis": times[len(times) // 2] * 1e3,
+            "mean_millis": sum(times) / len(times) * 1e3,
+        })
     print(json.dumps({"library": "coal " + getattr(coal, "__version__", "?"), "placements": out}, indent=2))
 
 
