@@ -5,7 +5,7 @@ use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
 use cga_collide::query::{self, Collider, Distance};
 use cga_collide::testing::oracle;
-use cga_collide::{Segment, TriMesh, Triangle};
+use cga_collide::{Ball, Segment, Sphere, TriMesh, Triangle};
 use proptest::prelude::*;
 
 fn coord() -> impl Strategy<Value = f64> {
@@ -181,4 +181,124 @@ fn bunny_against_a_moved_copy_agrees_with_brute_force_pair() {
         &b,
         d.distance + d.error_bound
     ));
+}
+
+// ---------------------------------------------------------------- balls and spheres
+
+fn radius() -> impl Strategy<Value = f64> {
+    prop_oneof![(0i32..=3).prop_map(f64::from), 0.0f64..3.0]
+}
+
+fn ball() -> impl Strategy<Value = Ball> {
+    (point(), radius()).prop_map(|(c, r)| Ball::new(c, r).unwrap())
+}
+
+fn sphere() -> impl Strategy<Value = Sphere> {
+    (point(), radius()).prop_map(|(c, r)| Sphere::new(c, r).unwrap())
+}
+
+/// The true distance written as `max(0, √x1 − r1, r2 − √x2)` (terms optional), exact rationals:
+/// checks `d - e <= true <= d + e` on squares, without any square root.
+struct Radial {
+    /// `(x1, r1)`: the gap outside, `√x1 − r1`.
+    outside: Option<(Rational, Rational)>,
+    /// `(x2, r2)`: the gap inside, `r2 − √x2`.
+    inside: Option<(Rational, Rational)>,
+}
+
+impl Radial {
+    /// `true distance <= t`.
+    fn at_most(&self, t: &Rational) -> bool {
+        let zero = q(0.0);
+        self.outside.as_ref().is_none_or(|(x, r)| {
+            let s = t + r;
+            s >= zero && x <= &(&s * &s)
+        }) && self.inside.as_ref().is_none_or(|(x, r)| {
+            let s = r - t;
+            s <= zero || x >= &(&s * &s)
+        })
+    }
+
+    /// `true distance >= t` (for `t > 0`).
+    fn at_least(&self, t: &Rational) -> bool {
+        let zero = q(0.0);
+        self.outside.as_ref().is_some_and(|(x, r)| {
+            let s = t + r;
+            s <= zero || x >= &(&s * &s)
+        }) || self.inside.as_ref().is_some_and(|(x, r)| {
+            let s = r - t;
+            s >= zero && x <= &(&s * &s)
+        })
+    }
+
+    fn check(&self, d: &Distance) -> Result<(), TestCaseError> {
+        let (dd, e) = (q(d.distance), q(d.error_bound));
+        prop_assert!(self.at_most(&(&dd + &e)), "above the bound: {:?}", d);
+        let lo = &dd - &e;
+        if lo > q(0.0) {
+            prop_assert!(self.at_least(&lo), "below the bound: {:?}", d);
+        }
+        prop_assert!(d.error_bound <= 1e-12, "loose bound {:?}", d);
+        Ok(())
+    }
+}
+
+fn centres2(a: &Point3<f64>, b: &Point3<f64>) -> Rational {
+    oracle::hulls_distance2(&[*a], &[*b])
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn ball_ball(a in ball(), b in ball()) {
+        let x = centres2(a.centre(), b.centre());
+        Radial { outside: Some((x, q(a.radius()) + q(b.radius()))), inside: None }
+            .check(&query::distance_ball_ball(&a, &b))?;
+    }
+
+    #[test]
+    fn ball_sphere(a in ball(), b in sphere()) {
+        // Distances from b's centre to the ball: [max(0, d − ra), d + ra].
+        let x = centres2(a.centre(), b.centre());
+        Radial {
+            outside: Some((x.clone(), q(a.radius()) + q(b.radius()))),
+            inside: Some((x, q(b.radius()) - q(a.radius()))),
+        }
+        .check(&query::distance_ball_sphere(&a, &b))?;
+    }
+
+    #[test]
+    fn sphere_sphere(a in sphere(), b in sphere()) {
+        let x = centres2(a.centre(), b.centre());
+        let (ra, rb) = (q(a.radius()), q(b.radius()));
+        let (big, small) = if ra >= rb { (ra.clone(), rb.clone()) } else { (rb.clone(), ra.clone()) };
+        Radial { outside: Some((x.clone(), &ra + &rb)), inside: Some((x, big - small)) }
+            .check(&query::distance_sphere_sphere(&a, &b))?;
+    }
+
+    #[test]
+    fn segment_and_triangle_with_balls_and_spheres(
+        s in segment(),
+        t in triangle(),
+        c in point(),
+        r in radius(),
+    ) {
+        let (ball, sphere) = (Ball::new(c, r).unwrap(), Sphere::new(c, r).unwrap());
+        for (pts, to_ball, to_sphere) in [
+            (vec![*s.a(), *s.b()], query::distance_segment_ball(&s, &ball),
+             query::distance_segment_sphere(&s, &sphere)),
+            (t.vertices().to_vec(), query::distance_triangle_ball(&t, &ball),
+             query::distance_triangle_sphere(&t, &sphere)),
+        ] {
+            let (near, far) = oracle::hull_distance2(&pts, &c);
+            Radial { outside: Some((near.clone(), q(r))), inside: None }.check(&to_ball)?;
+            Radial { outside: Some((near, q(r))), inside: Some((far, q(r))) }.check(&to_sphere)?;
+            // The witnesses are (up to rounding) as far apart as the distance.
+            for d in [&to_ball, &to_sphere] {
+                let w = dist2(&d.witness_a, &d.witness_b).sqrt();
+                prop_assert!((w - d.distance).abs() <= 1e-9, "witnesses {:?}", d);
+            }
+        }
+    }
 }

@@ -42,7 +42,7 @@ use nalgebra::Point3;
 use crate::query::clearance::{mesh_tri, triangles_within, WithinDistance};
 use crate::query::proximity::nearest_pair;
 use crate::query::{Collider, Intersects};
-use crate::shape::{Segment, Triangle};
+use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 type V<F> = [F; 3];
 
@@ -407,6 +407,210 @@ pub fn exact_distance_segment_triangle(a: &Segment, b: &Triangle) -> ExactDistan
 pub fn exact_distance_triangle_triangle(a: &Triangle, b: &Triangle) -> ExactDistance {
     let (s, t) = (tri(a).map(|p| qv(&p)), tri(b).map(|p| qv(&p)));
     exact(triangle_triangle(&s, &t), None)
+}
+
+// ---------------------------------------------------------------- balls and spheres
+
+#[inline]
+fn norm(v: &V<f64>) -> f64 {
+    dot(v, v).sqrt()
+}
+
+/// `from + (towards − from)·(len / |towards − from|)`: the point at distance `len` from `from`
+/// in the direction of `towards` (any direction if they coincide).
+fn step(from: &V<f64>, towards: &V<f64>, len: f64) -> V<f64> {
+    let u = sub(towards, from);
+    let n = norm(&u);
+    if n > 0.0 && n.is_finite() {
+        add_scaled(from, &u, &(len / n))
+    } else {
+        [from[0] + len, from[1], from[2]]
+    }
+}
+
+/// A point at distance `r` from `c` on the segment `[s, f]`, where `|s − c| <= r <= |f − c|`
+/// (`f64`, up to rounding): the root of `|s + t(f − s) − c|² = r²` in `[0, 1]`.
+fn crossing(c: &V<f64>, r: f64, s: &V<f64>, f: &V<f64>) -> V<f64> {
+    let (u, w) = (sub(f, s), sub(s, c));
+    let (aa, bb, cc) = (dot(&u, &u), dot(&u, &w), dot(&w, &w) - r * r);
+    if aa.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
+        return *s;
+    }
+    let t = ((-bb + (bb * bb - aa * cc).max(0.0).sqrt()) / aa).clamp(0.0, 1.0);
+    add_scaled(s, &u, &t)
+}
+
+/// The nearest points of a closed set `S` and the sphere *surface* (centre `c`, radius `r`),
+/// given the point `near` of `S` nearest to `c` and a point `far` of `S` farthest from it
+/// (the distances from `c` to `S` fill `[|near − c|, |far − c|]`, `S` being connected).
+/// Returns the distance and the witnesses (on `S`, on the surface).
+fn set_to_surface(near: V<f64>, far: V<f64>, c: &V<f64>, r: f64) -> (f64, V<f64>, V<f64>) {
+    let (m, big) = (norm(&sub(&near, c)), norm(&sub(&far, c)));
+    if m > r {
+        let y = step(c, &near, r);
+        (m - r, near, y)
+    } else if big < r {
+        let y = step(c, &far, r);
+        (r - big, far, y)
+    } else {
+        let x = crossing(c, r, &near, &far);
+        (0.0, x, x)
+    }
+}
+
+/// The nearest points of a closed set `S` and the ball (centre `c`, radius `r`), given the
+/// point `near` of `S` nearest to `c`.
+fn set_to_ball(near: V<f64>, c: &V<f64>, r: f64) -> (f64, V<f64>, V<f64>) {
+    let m = norm(&sub(&near, c));
+    if m > r {
+        let y = step(c, &near, r);
+        (m - r, near, y)
+    } else {
+        (0.0, near, near)
+    }
+}
+
+/// The vertex of `vs` farthest from `c` (in `f64`).
+fn farthest(vs: &[V<f64>], c: &V<f64>) -> V<f64> {
+    let mut best = (f64::NEG_INFINITY, vs[0]);
+    for v in vs {
+        let d = dist2(v, c);
+        if d > best.0 {
+            best = (d, *v);
+        }
+    }
+    best.1
+}
+
+/// Wraps an `f64` answer `(distance, witness_a, witness_b)` with its certified bound; `within`
+/// is the exact clearance test of the pair, `scale` bounds the coordinates and radii.
+fn finish_radial(
+    (distance, x, y): (f64, V<f64>, V<f64>),
+    scale: f64,
+    within: impl Fn(f64) -> bool,
+) -> Distance {
+    Distance {
+        distance,
+        error_bound: certify(distance, scale, || within(0.0), &within, &within),
+        witness_a: Point3::from(x),
+        witness_b: Point3::from(y),
+        triangles: None,
+    }
+}
+
+fn scale_with(points: &[&V<f64>], radii: &[f64]) -> f64 {
+    radii.iter().fold(scale_of(points), |m, r| m.max(r.abs()))
+}
+
+/// The minimum distance between two solid balls (0 when they meet), with witnesses and a
+/// certified bound (see the [module docs](self)).
+///
+/// ```
+/// use cga_collide::{nalgebra::Point3, query, Ball};
+/// let a = Ball::new(Point3::origin(), 1.0)?;
+/// let b = Ball::new(Point3::new(3.0, 0.0, 0.0), 0.5)?;
+/// let d = query::distance_ball_ball(&a, &b);
+/// assert!((d.distance - 1.5).abs() <= d.error_bound);
+/// assert_eq!(d.witness_a, Point3::new(1.0, 0.0, 0.0));
+/// # Ok::<(), cga_collide::GeometryError>(())
+/// ```
+pub fn distance_ball_ball(a: &Ball, b: &Ball) -> Distance {
+    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let d = norm(&sub(&cb, &ca));
+    let near = if d > ra { step(&ca, &cb, ra) } else { cb };
+    let (dist, y, x) = set_to_ball(near, &cb, rb);
+    let x = if dist > 0.0 { x } else { y };
+    finish_radial((dist, x, y), scale_with(&[&ca, &cb], &[ra, rb]), |c| {
+        a.within_distance(b, c)
+    })
+}
+
+/// The minimum distance between a solid ball and a sphere *surface* (a ball deep inside the
+/// sphere is at the distance to the surface).
+pub fn distance_ball_sphere(a: &Ball, b: &Sphere) -> Distance {
+    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let d = norm(&sub(&cb, &ca));
+    // The points of the ball nearest to and farthest from the sphere's centre.
+    let near = if d > ra { step(&ca, &cb, ra) } else { cb };
+    let far = if d > 0.0 {
+        step(&ca, &cb, -ra)
+    } else {
+        [ca[0] + ra, ca[1], ca[2]]
+    };
+    finish_radial(
+        set_to_surface(near, far, &cb, rb),
+        scale_with(&[&ca, &cb], &[ra, rb]),
+        |c| a.within_distance(b, c),
+    )
+}
+
+/// The minimum distance between two sphere *surfaces* (nested spheres are at the gap between
+/// the surfaces).
+pub fn distance_sphere_sphere(a: &Sphere, b: &Sphere) -> Distance {
+    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let d = norm(&sub(&cb, &ca));
+    // `b`'s surface as a set seen from `a`'s centre: nearest and farthest points.
+    let near = if d > 0.0 {
+        step(&cb, &ca, rb)
+    } else {
+        [cb[0] + rb, cb[1], cb[2]]
+    };
+    let far = if d > 0.0 {
+        step(&cb, &ca, -rb)
+    } else {
+        [cb[0] + rb, cb[1], cb[2]]
+    };
+    let (dist, on_b, on_a) = set_to_surface(near, far, &ca, ra);
+    finish_radial(
+        (dist, on_a, on_b),
+        scale_with(&[&ca, &cb], &[ra, rb]),
+        |c| a.within_distance(b, c),
+    )
+}
+
+/// The minimum distance between a closed segment and a solid ball.
+pub fn distance_segment_ball(a: &Segment, b: &Ball) -> Distance {
+    let (p0, p1, c) = (pt(a.a()), pt(a.b()), pt(b.centre()));
+    finish_radial(
+        set_to_ball(point_segment(&p0, &p1, &c), &c, b.radius()),
+        scale_with(&[&p0, &p1, &c], &[b.radius()]),
+        |r| a.within_distance(b, r),
+    )
+}
+
+/// The minimum distance between a closed segment and a sphere *surface*.
+pub fn distance_segment_sphere(a: &Segment, b: &Sphere) -> Distance {
+    let (p0, p1, c) = (pt(a.a()), pt(a.b()), pt(b.centre()));
+    finish_radial(
+        set_to_surface(
+            point_segment(&p0, &p1, &c),
+            farthest(&[p0, p1], &c),
+            &c,
+            b.radius(),
+        ),
+        scale_with(&[&p0, &p1, &c], &[b.radius()]),
+        |r| a.within_distance(b, r),
+    )
+}
+
+/// The minimum distance between a closed triangle and a solid ball.
+pub fn distance_triangle_ball(a: &Triangle, b: &Ball) -> Distance {
+    let (t, c) = (tri(a), pt(b.centre()));
+    finish_radial(
+        set_to_ball(point_triangle(&t, &c), &c, b.radius()),
+        scale_with(&[&t[0], &t[1], &t[2], &c], &[b.radius()]),
+        |r| a.within_distance(b, r),
+    )
+}
+
+/// The minimum distance between a closed triangle and a sphere *surface*.
+pub fn distance_triangle_sphere(a: &Triangle, b: &Sphere) -> Distance {
+    let (t, c) = (tri(a), pt(b.centre()));
+    finish_radial(
+        set_to_surface(point_triangle(&t, &c), farthest(&t, &c), &c, b.radius()),
+        scale_with(&[&t[0], &t[1], &t[2], &c], &[b.radius()]),
+        |r| a.within_distance(b, r),
+    )
 }
 
 // ---------------------------------------------------------------- meshes

@@ -45,7 +45,9 @@ pub use contact::{
 };
 pub use containment::{point_in_solid, ray_crosses_triangle};
 pub use distance::{
-    distance_segment_segment, distance_segment_triangle, distance_triangle_triangle,
+    distance_ball_ball, distance_ball_sphere, distance_segment_ball, distance_segment_segment,
+    distance_segment_sphere, distance_segment_triangle, distance_sphere_sphere,
+    distance_triangle_ball, distance_triangle_sphere, distance_triangle_triangle,
     exact_distance_segment_segment, exact_distance_segment_triangle,
     exact_distance_triangle_triangle, exact_mesh_distance, mesh_distance, Distance, ExactDistance,
 };
