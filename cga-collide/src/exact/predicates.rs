@@ -74,6 +74,39 @@ fn inner<R: Ring>(a: &Vector<R>, b: &Vector<R>) -> R {
     a.scalar_product(b)
 }
 
+/// `|w × d|² - r2·|d|²` with `d = b - a`, `w = c - a` for the points `a, b, c` at the start of
+/// `x`: shared by [`LineDistance`] (`r2 = r²`) and [`LineReach`] (`r2` a squared reach).
+#[inline(always)]
+fn line_gap<R: Ring>(x: &[R], r2: R) -> R {
+    let a = v3(x, 0);
+    let d = sub(&v3(x, 3), &a);
+    let w = sub(&v3(x, 6), &a);
+    let m = cross(&w, &d);
+    dot(&m, &m) - r2 * dot(&d, &d)
+}
+
+/// `(n·(q - a))² - r2·|n|²` with `n = (b - a) × (c - a)` for the points `a, b, c, q` at the
+/// start of `x`: shared by [`PlaneDistance`] and [`PlaneReach`].
+#[inline(always)]
+fn plane_gap<R: Ring>(x: &[R], r2: R) -> R {
+    let a = v3(x, 0);
+    let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 6), &a));
+    let h = dot(&n, &sub(&v3(x, 9), &a));
+    h.clone() * h - r2 * dot(&n, &n)
+}
+
+/// For the segments `ab`, `cd` at the start of `x`: `u = b - a`, `v = d - c`, `w = c - a` and
+/// `n = u × v` (the line–line predicates).
+#[inline(always)]
+fn line_line<R: Ring>(x: &[R]) -> (V3<R>, V3<R>, V3<R>, V3<R>) {
+    let a = v3(x, 0);
+    let u = sub(&v3(x, 3), &a);
+    let v = sub(&v3(x, 9), &v3(x, 6));
+    let w = sub(&v3(x, 6), &a);
+    let n = cross(&u, &v);
+    (u, v, w, n)
+}
+
 /// `orient3d(a, b, c, d) = (b - a) × (c - a) · (d - a)`, inputs `[a, b, c, d]` (12 numbers):
 /// the `e12345` coefficient of `up(a) ∧ up(b) ∧ up(c) ∧ up(d) ∧ n_inf`, expanded by hand in the
 /// frame translated to `a` (the literal generated-wedge version is [`Orient3dCga`]; the
@@ -165,12 +198,7 @@ pub struct LineDistance;
 impl Predicate<10> for LineDistance {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 10]) -> R {
-        let a = v3(x, 0);
-        let d = sub(&v3(x, 3), &a);
-        let w = sub(&v3(x, 6), &a);
-        let m = cross(&w, &d);
-        let r2 = x[9].clone() * x[9].clone();
-        dot(&m, &m) - r2 * dot(&d, &d)
+        line_gap(x, x[9].clone() * x[9].clone())
     }
 }
 
@@ -194,11 +222,7 @@ pub struct PlaneDistance;
 impl Predicate<13> for PlaneDistance {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 13]) -> R {
-        let a = v3(x, 0);
-        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 6), &a));
-        let h = dot(&n, &sub(&v3(x, 9), &a));
-        let r2 = x[12].clone() * x[12].clone();
-        h.clone() * h - r2 * dot(&n, &n)
+        plane_gap(x, x[12].clone() * x[12].clone())
     }
 }
 
@@ -289,11 +313,7 @@ pub struct LineReach;
 impl Predicate<12> for LineReach {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 12]) -> R {
-        let a = v3(x, 0);
-        let d = sub(&v3(x, 3), &a);
-        let w = sub(&v3(x, 6), &a);
-        let m = cross(&w, &d);
-        dot(&m, &m) - reach2(x, 9) * dot(&d, &d)
+        line_gap(x, reach2(x, 9))
     }
 }
 
@@ -303,10 +323,7 @@ pub struct PlaneReach;
 impl Predicate<15> for PlaneReach {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 15]) -> R {
-        let a = v3(x, 0);
-        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 6), &a));
-        let h = dot(&n, &sub(&v3(x, 9), &a));
-        h.clone() * h - reach2(x, 12) * dot(&n, &n)
+        plane_gap(x, reach2(x, 12))
     }
 }
 
@@ -316,8 +333,7 @@ pub struct CrossNorm2;
 impl Predicate<12> for CrossNorm2 {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 12]) -> R {
-        let a = v3(x, 0);
-        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 9), &v3(x, 6)));
+        let (_, _, _, n) = line_line(x);
         dot(&n, &n)
     }
 }
@@ -328,11 +344,8 @@ pub struct LineLineParam;
 impl Predicate<12> for LineLineParam {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 12]) -> R {
-        let a = v3(x, 0);
-        let u = sub(&v3(x, 3), &a);
-        let v = sub(&v3(x, 9), &v3(x, 6));
-        let w = sub(&v3(x, 6), &a);
-        dot(&cross(&w, &v), &cross(&u, &v))
+        let (_, v, w, n) = line_line(x);
+        dot(&cross(&w, &v), &n)
     }
 }
 
@@ -341,11 +354,7 @@ pub struct LineLineParamRest;
 impl Predicate<12> for LineLineParamRest {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 12]) -> R {
-        let a = v3(x, 0);
-        let u = sub(&v3(x, 3), &a);
-        let v = sub(&v3(x, 9), &v3(x, 6));
-        let w = sub(&v3(x, 6), &a);
-        let n = cross(&u, &v);
+        let (_, v, w, n) = line_line(x);
         dot(&n, &n) - dot(&cross(&w, &v), &n)
     }
 }
@@ -356,9 +365,8 @@ pub struct LineLineReach;
 impl Predicate<13> for LineLineReach {
     #[inline(always)]
     fn eval<R: Ring>(x: &[R; 13]) -> R {
-        let a = v3(x, 0);
-        let n = cross(&sub(&v3(x, 3), &a), &sub(&v3(x, 9), &v3(x, 6)));
-        let h = dot(&n, &sub(&v3(x, 6), &a));
+        let (_, _, w, n) = line_line(x);
+        let h = dot(&n, &w);
         h.clone() * h - x[12].clone() * x[12].clone() * dot(&n, &n)
     }
 }
