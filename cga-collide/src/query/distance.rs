@@ -621,6 +621,9 @@ const U: f64 = f64::EPSILON / 2.0;
 const TINY: f64 = 9.332636185032189e-302; // 2^-1000
 /// Below this squared length a direction is too small for a relative error analysis.
 const SMALL2: f64 = 1.0e-280;
+/// Results below this are treated as no information: far above the subnormal range, where
+/// rounding errors are absolute rather than relative.
+const NORMAL: f64 = 1.0e-290;
 
 /// The separation of triangles `p` and `q` along a direction `n` (any vector), as a pair
 /// `(g, nn)`: the distance is **proved** (for the real numbers the `f64` coordinates denote)
@@ -667,16 +670,25 @@ fn separation(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Option<(f64, f64)
 
 /// Whether a separation `(g, nn)` proves the distance squared above `best`: `g² > best·nn`
 /// with a relative margin `16u` that pays for `g` (`1 + u`), `nn` (`γ₃`) and the two products.
+/// `g²` must be far from the subnormal range (where rounding is absolute, not relative); then
+/// a subnormal `best·nn` is below it anyway.
 #[inline]
 fn separated_beyond((g, nn): (f64, f64), best: f64) -> bool {
-    g * g * (1.0 - 16.0 * U) > best * nn
+    let g2 = g * g;
+    g2 >= NORMAL && g2 * (1.0 - 16.0 * U) > best * nn
 }
 
 /// The proved lower bound `g / √nn` of a separation, rounded down (the square root, the
 /// division and `nn` cost under `4u` relative, paid by the factor `1 − 8u`).
 #[inline]
 fn separation_bound((g, nn): (f64, f64)) -> f64 {
-    g / nn.sqrt() * (1.0 - 8.0 * U)
+    let b = g / nn.sqrt() * (1.0 - 8.0 * U);
+    // A quotient near the subnormal range could be rounded up by an absolute amount.
+    if b >= NORMAL {
+        b
+    } else {
+        0.0
+    }
 }
 
 /// The normal `(b − a) × (c − a)` of a triangle, in `f64` (a test direction for
