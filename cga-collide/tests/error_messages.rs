@@ -184,10 +184,10 @@ fn sphere_tree_files_name_the_line() {
             "1 of 2 trees complete",
         ],
     );
-    // A negative radius: the line of the tree and the node.
+    // A negative radius: the line, the field and the rule.
     says(
         read("1\n0 0 0 -1 0\n0 8\n").unwrap_err(),
-        &["line 2", "node 0", "radius is negative", "-1"],
+        &["line 2", "non-negative radius", "not -1"],
     );
 }
 
