@@ -46,8 +46,8 @@
 //! | [`exp_log`] | exponentials, logarithms and square roots of versors, in closed form |
 //! | [`inverse`] | the checked inverse behind every generated type's `inverse()` |
 //! | [`linalg`] | the small exact-friendly linear solver used by [`inverse`] |
-//! | [`reference`] | a dense multivector with a run-time signature: the test oracle for the generated algebras |
-//! | [`format`] | printing multivectors with canonical blade names (`2e1 - 0.5e45`) |
+//! | [`reference`](mod@reference) | a dense multivector with a run-time signature: the test oracle for the generated algebras |
+//! | [`format`](mod@format) | printing multivectors with canonical blade names (`2e1 - 0.5e45`) |
 //! | [`interop`] | conversions to and from `glam`, `mint`, `bytemuck` (features of the same names) |
 //!
 //! # Choosing what to call
