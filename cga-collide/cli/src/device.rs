@@ -68,8 +68,8 @@ pub struct Answers<T> {
     pub flagged: u64,
 }
 
-/// Options `name` that the GPU path does not support, given with `--device gpu`: an error that
-/// names them and says what to do.
+/// The options in `given` (given with `--device gpu`) are ones the GPU path does not support:
+/// an error that names them and says what to do (`Ok` when `given` is empty).
 pub fn reject_unsupported(given: &[&str]) -> Result<()> {
     if given.is_empty() {
         return Ok(());
