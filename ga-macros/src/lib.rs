@@ -48,7 +48,7 @@
 //! # Map of what is generated (in the module where the macro is invoked)
 //! | item | what it is |
 //! |---|---|
-//! | one struct per declared type | `#[repr(C)]`, one public field per blade (`v.e1`, `r.e12`, the scalar `s`); `new`, `from_coefficients`, `coefficients`, `zero`, `BLADES`, `BLADE_MASKS`, `Display` (`2e1 - 0.5e45`), the `approx` traits |
+//! | one struct per declared type | `#[repr(C)]`, one public field per blade (`v.e1`, `r.e12`, the scalar `s`); `new`, `from_coefficients`, `coefficients`, `zero`, `map` (same value over another scalar), `BLADES`, `BLADE_MASKS`, `Display` (`2e1 - 0.5e45`), the `approx` traits |
 //! | the dense type (`dense`, default `Multivector`) | every blade; `From` every declared type, `X::from_multivector` projects back |
 //! | products of every ordered pair of types | the `ga_core::ops` traits and operators: `*` geometric, `^` wedge, `\|` left contraction, `&` regressive, `scalar_product`, `right_contraction`, `+`, `-`, `sandwich_unit`, `sandwich` |
 //! | unary operations | `reverse`, `grade_involution`, `conjugate`, `dual` (`!a`), `undual`, `grade(k)`, `norm_squared`, `scale`, `versor_inverse`, `inverse` |
