@@ -232,6 +232,9 @@ impl Radial {
     }
 
     fn check(&self, d: &Distance) -> Result<(), TestCaseError> {
+        // The witnesses are (up to rounding) as far apart as the distance.
+        let w = dist2(&d.witness_a, &d.witness_b).sqrt();
+        prop_assert!((w - d.distance).abs() <= 1e-9, "witnesses {:?}", d);
         let (dd, e) = (q(d.distance), q(d.error_bound));
         prop_assert!(self.at_most(&(&dd + &e)), "above the bound: {:?}", d);
         let lo = &dd - &e;
@@ -241,6 +244,17 @@ impl Radial {
         prop_assert!(d.error_bound <= 1e-12, "loose bound {:?}", d);
         Ok(())
     }
+}
+
+/// `w` lies in the ball (`solid`) or on the sphere of centre `c` and radius `r`, up to rounding.
+fn on(w: &Point3<f64>, c: &Point3<f64>, r: f64, solid: bool) -> Result<(), TestCaseError> {
+    let d = dist2(w, c).sqrt();
+    let slack = 1e-9 * (1.0 + r + d);
+    prop_assert!(
+        d <= r + slack && (solid || d >= r - slack),
+        "{w} vs ({c}, {r})"
+    );
+    Ok(())
 }
 
 fn centres2(a: &Point3<f64>, b: &Point3<f64>) -> Rational {
@@ -253,8 +267,10 @@ proptest! {
     #[test]
     fn ball_ball(a in ball(), b in ball()) {
         let x = centres2(a.centre(), b.centre());
-        Radial { outside: Some((x, q(a.radius()) + q(b.radius()))), inside: None }
-            .check(&query::distance_ball_ball(&a, &b))?;
+        let d = query::distance_ball_ball(&a, &b);
+        Radial { outside: Some((x, q(a.radius()) + q(b.radius()))), inside: None }.check(&d)?;
+        on(&d.witness_a, a.centre(), a.radius(), true)?;
+        on(&d.witness_b, b.centre(), b.radius(), true)?;
     }
 
     #[test]
@@ -266,6 +282,9 @@ proptest! {
             inside: Some((x, q(b.radius()) - q(a.radius()))),
         }
         .check(&query::distance_ball_sphere(&a, &b))?;
+        let d = query::distance_ball_sphere(&a, &b);
+        on(&d.witness_a, a.centre(), a.radius(), true)?;
+        on(&d.witness_b, b.centre(), b.radius(), false)?;
     }
 
     #[test]
@@ -275,6 +294,9 @@ proptest! {
         let (big, small) = if ra >= rb { (ra.clone(), rb.clone()) } else { (rb.clone(), ra.clone()) };
         Radial { outside: Some((x.clone(), &ra + &rb)), inside: Some((x, big - small)) }
             .check(&query::distance_sphere_sphere(&a, &b))?;
+        let d = query::distance_sphere_sphere(&a, &b);
+        on(&d.witness_a, a.centre(), a.radius(), false)?;
+        on(&d.witness_b, b.centre(), b.radius(), false)?;
     }
 
     #[test]
@@ -294,6 +316,8 @@ proptest! {
             let (near, far) = oracle::hull_distance2(&pts, &c);
             Radial { outside: Some((near.clone(), q(r))), inside: None }.check(&to_ball)?;
             Radial { outside: Some((near, q(r))), inside: Some((far, q(r))) }.check(&to_sphere)?;
+            on(&to_ball.witness_b, &c, r, true)?;
+            on(&to_sphere.witness_b, &c, r, false)?;
             // The witnesses are (up to rounding) as far apart as the distance.
             for d in [&to_ball, &to_sphere] {
                 let w = dist2(&d.witness_a, &d.witness_b).sqrt();

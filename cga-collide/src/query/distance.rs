@@ -518,11 +518,11 @@ pub fn distance_ball_ball(a: &Ball, b: &Ball) -> Distance {
     let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
     let d = norm(&sub(&cb, &ca));
     let near = if d > ra { step(&ca, &cb, ra) } else { cb };
-    let (dist, y, x) = set_to_ball(near, &cb, rb);
-    let x = if dist > 0.0 { x } else { y };
-    finish_radial((dist, x, y), scale_with(&[&ca, &cb], &[ra, rb]), |c| {
-        a.within_distance(b, c)
-    })
+    finish_radial(
+        set_to_ball(near, &cb, rb),
+        scale_with(&[&ca, &cb], &[ra, rb]),
+        |c| a.within_distance(b, c),
+    )
 }
 
 /// The minimum distance between a solid ball and a sphere *surface* (a ball deep inside the
@@ -560,12 +560,39 @@ pub fn distance_sphere_sphere(a: &Sphere, b: &Sphere) -> Distance {
     } else {
         [cb[0] + rb, cb[1], cb[2]]
     };
-    let (dist, on_b, on_a) = set_to_surface(near, far, &ca, ra);
+    let (dist, mut on_b, mut on_a) = set_to_surface(near, far, &ca, ra);
+    if dist == 0.0 {
+        // The surfaces meet in a circle (the chord point of `set_to_surface` is not on `b`'s
+        // surface): the point of that circle in a plane through the centres.
+        let x = circle_point(&ca, ra, &cb, rb);
+        (on_a, on_b) = (x, x);
+    }
     finish_radial(
         (dist, on_a, on_b),
         scale_with(&[&ca, &cb], &[ra, rb]),
         |c| a.within_distance(b, c),
     )
+}
+
+/// A point common to two meeting sphere surfaces (`f64`, up to rounding): on the line of the
+/// centres at `t = (d² + ra² − rb²) / 2d` from `ca`, moved by `√(ra² − t²)` across it.
+fn circle_point(ca: &V<f64>, ra: f64, cb: &V<f64>, rb: f64) -> V<f64> {
+    let u = sub(cb, ca);
+    let d = norm(&u);
+    if !(d > 0.0 && d.is_finite()) {
+        return [ca[0] + ra, ca[1], ca[2]]; // concentric: equal radii, any point
+    }
+    let t = ((d * d + ra * ra - rb * rb) / (2.0 * d)).clamp(-ra, ra);
+    let h = (ra * ra - t * t).max(0.0).sqrt();
+    // A unit vector across the line of the centres: `u` crossed with its smallest axis.
+    let k = (0..3)
+        .min_by(|&i, &j| u[i].abs().total_cmp(&u[j].abs()))
+        .unwrap_or(0);
+    let mut e = [0.0; 3];
+    e[k] = 1.0;
+    let w = cross(&u, &e);
+    let on_axis = add_scaled(ca, &u, &(t / d));
+    add_scaled(&on_axis, &w, &(h / norm(&w)))
 }
 
 /// The minimum distance between a closed segment and a solid ball.
