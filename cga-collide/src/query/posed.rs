@@ -768,6 +768,145 @@ mod tests {
         }
     }
 
+    /// Nodes from the leaf of triangle `t` (leaf position in the tree's order) up to the root.
+    fn ancestors(c: &Collider, t: u32) -> Vec<usize> {
+        let nodes = c.pose_tree().nodes();
+        let mut parent = vec![usize::MAX; nodes.len()];
+        for (i, n) in nodes.iter().enumerate() {
+            if !n.is_leaf() {
+                parent[n.start as usize] = i;
+                parent[n.start as usize + 1] = i;
+            }
+        }
+        let k = c.bvh().order().iter().position(|&u| u == t).unwrap();
+        let mut at = nodes
+            .iter()
+            .position(|n| n.is_leaf() && (n.start..n.start + n.count).contains(&(k as u32)))
+            .unwrap();
+        let mut out = vec![at];
+        while parent[at] != usize::MAX {
+            at = parent[at];
+            out.push(at);
+        }
+        out
+    }
+
+    /// Every pair of nodes holding two placed triangles that meet passes the box test under
+    /// the poses (not only the pairs the traversal happens to visit), and the traversal finds
+    /// exactly the pairs brute force finds. Returns the number of meeting pairs.
+    fn box_test_keeps_meeting_pairs(
+        a: &Collider,
+        pa: &Isometry3<f64>,
+        b: &Collider,
+        pb: &Isometry3<f64>,
+    ) -> Result<usize, TestCaseError> {
+        let (wa, wb) = (a.placed(pa).unwrap(), b.placed(pb).unwrap());
+        let want = wa.intersecting_pairs(&wb, crate::query::Mode::Brute);
+        let pair = PosedPair::new(a, pa, b, pb).unwrap();
+        let (na, nb) = (a.pose_tree().nodes(), b.pose_tree().nodes());
+        for &(i, j) in &want {
+            for &x in &ancestors(a, i) {
+                for &y in &ancestors(b, j) {
+                    prop_assert!(pair.may_overlap(&na[x], &nb[y]), "{i} {j}: nodes {x} {y}");
+                }
+            }
+        }
+        let mut got = pair.collect_pairs(&[(0, 0)]);
+        got.sort_unstable();
+        prop_assert_eq!(got, want.clone());
+        Ok(want.len())
+    }
+
+    fn soup(seed: u64, n: usize, spread: f64) -> crate::TriMesh {
+        let mut rng = crate::testing::adversarial::SplitMix64(seed);
+        let mut v = Vec::new();
+        let mut t = Vec::new();
+        for k in 0..n as u32 {
+            let c = Vector3::new(
+                rng.float(-spread, spread),
+                rng.float(-spread, spread),
+                rng.float(-spread, spread),
+            );
+            for _ in 0..3 {
+                v.push(Point3::from(
+                    c + Vector3::new(
+                        rng.float(-0.5, 0.5),
+                        rng.float(-0.5, 0.5),
+                        rng.float(-0.5, 0.5),
+                    ),
+                ));
+            }
+            // Every 5th triangle degenerate (a repeated corner).
+            t.push(if k % 5 == 0 {
+                [3 * k, 3 * k + 1, 3 * k + 1]
+            } else {
+                [3 * k, 3 * k + 1, 3 * k + 2]
+            });
+        }
+        crate::TriMesh::new(v, t).unwrap()
+    }
+
+    /// Exact rotations (identity, half turns about the axes) and rounded quarter turns.
+    fn lattice_rotation(k: usize) -> UnitQuaternion<f64> {
+        let q = |w, x, y, z| UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(w, x, y, z));
+        match k {
+            0 => UnitQuaternion::identity(),
+            1 => q(0.0, 1.0, 0.0, 0.0),
+            2 => q(0.0, 0.0, 1.0, 0.0),
+            3 => q(0.0, 0.0, 0.0, 1.0),
+            4 => UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2),
+            _ => UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -std::f64::consts::FRAC_PI_2),
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Random soups (with degenerate triangles) at random poses, both meshes moved.
+        #[test]
+        fn box_test_never_rejects_meeting_triangles(
+            seed in any::<u64>(),
+            ra in prop::array::uniform3(-4.0f64..4.0), ta in prop::array::uniform3(-1.0f64..1.0),
+            rb in prop::array::uniform3(-4.0f64..4.0), tb in prop::array::uniform3(-1.0f64..1.0),
+        ) {
+            let a = Collider::new(soup(seed, 60, 1.0));
+            let b = Collider::new(soup(seed ^ 0x5555, 40, 1.0));
+            box_test_keeps_meeting_pairs(&a, &pose(ra, ta), &b, &pose(rb, tb))?;
+        }
+
+        /// Integer cubes in face, edge and corner contact (and coplanar faces) at exact and
+        /// quarter-turn rotations: every contact survives the box test.
+        #[test]
+        fn box_test_keeps_touching_cubes(
+            lo in prop::array::uniform3(-2i32..2), size in prop::array::uniform3(1i32..3),
+            k in 0usize..6, l in 0usize..6, t in prop::array::uniform3(-3i32..4),
+        ) {
+            let hi = [lo[0] + size[0], lo[1] + size[1], lo[2] + size[2]];
+            let f = |p: [i32; 3]| Point3::from(p.map(f64::from));
+            let a = Collider::new(crate::TriMesh::cuboid(f(lo), f(hi)).unwrap());
+            let b = Collider::new(crate::TriMesh::cuboid(f([0, 0, 0]), f(size)).unwrap());
+            let pa = Isometry3::from_parts(nalgebra::Translation3::identity(), lattice_rotation(k));
+            let pb = Isometry3::from_parts(
+                nalgebra::Translation3::new(t[0] as f64, t[1] as f64, t[2] as f64),
+                lattice_rotation(l),
+            );
+            box_test_keeps_meeting_pairs(&a, &pa, &b, &pb)?;
+        }
+    }
+
+    /// The cube tests above are not vacuous: exact face contact after a half turn is kept.
+    #[test]
+    fn touching_after_a_half_turn_is_kept() {
+        let f = |x, y, z| Point3::new(x, y, z);
+        let a = Collider::new(crate::TriMesh::cuboid(f(0.0, 0.0, 0.0), f(1.0, 1.0, 1.0)).unwrap());
+        let pb = Isometry3::from_parts(
+            nalgebra::Translation3::new(2.0, 1.0, 0.0),
+            lattice_rotation(3),
+        );
+        let n = box_test_keeps_meeting_pairs(&a, &Isometry3::identity(), &a, &pb).unwrap();
+        assert!(n > 0);
+    }
+
     #[test]
     fn bad_poses_are_typed_errors() {
         let c = Collider::new(
