@@ -4,15 +4,21 @@
 //!
 //! # How
 //! * Mesh against mesh: the two hierarchies are descended together under the relative motion.
-//!   A box of B is carried into A's frame by a rounded relative transform, and the box test is
-//!   widened by a margin that bounds every rounding on the way (below), so no pair of
-//!   triangles that meets after placing is ever pruned.
+//!   Each node is read as a centre and half-extents (`pose_tree`: one 64-byte cache line per
+//!   node). B's box is carried into A's frame by a rounded relative transform and tested on
+//!   A's three axes, then A's box into B's frame on B's three axes (the six face axes of the
+//!   separating-axis test of two oriented boxes); each test is widened by a margin that bounds
+//!   every rounding on the way (below), so no pair of triangles that meets after placing is
+//!   ever pruned.
 //! * Mesh against a shape: each box of the hierarchy is carried into the world by the pose,
 //!   widened the same way, and tested against the shape.
 //! * At the leaves, only the candidate triangles are transformed, with **the very expression
 //!   `pose * v` that [`TriMesh::transformed`](crate::TriMesh::transformed) uses**, so they are
 //!   bit-identical to the placed mesh's triangles; the placed query's exact box filter and exact
-//!   test then decide, on the same numbers.
+//!   test then decide, on the same numbers. The vertices are read from a copy in leaf order
+//!   (contiguous), and each leaf is placed at most once per traversal, in scratch memory each
+//!   thread keeps from one query to the next (no allocation per pose once it has grown; about
+//!   8 bytes per node of the largest trees the thread has met).
 //!
 //! # The rounding bound
 //! nalgebra evaluates `pose * v` for the unit quaternion `q = (w, u)` and translation `τ` as
@@ -34,8 +40,13 @@
 //!   `D x - D τ_A ∈ box_A ⊕ r_A` and `D x - D τ_A ∈ R̂ box_B + t̂ ⊕ r_B`, where
 //!   `R̂ = fl(D M̂_B)`, `t̂ = fl(D fl(τ_B - τ_A))` and the radii collect `|D M_A - I|`,
 //!   `|D M_B - R̂|` (matrix-product rounding `4u|D||M̂|` plus `|D| |M - M̂|`), `|D| δ` and the
-//!   rounding of `t̂`. The test `box_A` against the box of `R̂ box_B + t̂`, widened by
-//!   `r_A + r_B` plus `16u` times the magnitudes involved, is therefore conservative.
+//!   rounding of `t̂`. With the boxes as `[c - e, c + e]` (real boxes holding the nodes' exact
+//!   boxes, `|c| ≤ ρ`, `e ≤ 2ρ(1 + 10u) + 2⁻¹⁰⁰⁰`), such a point exists only if on each axis
+//!   `i` of A, `|(R̂ c_B + t̂ - c_A)ᵢ| ≤ Σⱼ |R̂ᵢⱼ| e_Bⱼ + e_Aᵢ + r_A + r_B`. The code evaluates
+//!   both sides in `f64` and adds `16u (9 max|R̂ᵢⱼ| ρ_B + |t̂|∞ + 3ρ_A + r_A + r_B)`, more
+//!   than the rounding of either side (each a sum of at most five terms of those magnitudes),
+//!   so the test in `f64` rejects a pair only when the real inequality fails: it is
+//!   conservative. The same holds with the roles of A and B exchanged.
 //!
 //! Poses whose quaternion is far from unit (`|q|²` outside `[1/2, 2]`), non-finite poses, and
 //! meshes or translations so large that the bounds could overflow (`|coordinate| ≥ 2⁹⁹⁰`) get a
