@@ -829,22 +829,25 @@ mod tests {
     }
 
     fn soup(seed: u64, n: usize, spread: f64) -> crate::TriMesh {
-        let mut rng = crate::testing::adversarial::SplitMix64(seed);
+        // A small local generator (query sits above the `testing` module).
+        let mut state = seed;
+        let mut float = |lo: f64, hi: f64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+        };
         let mut v = Vec::new();
         let mut t = Vec::new();
         for k in 0..n as u32 {
             let c = Vector3::new(
-                rng.float(-spread, spread),
-                rng.float(-spread, spread),
-                rng.float(-spread, spread),
+                float(-spread, spread),
+                float(-spread, spread),
+                float(-spread, spread),
             );
             for _ in 0..3 {
                 v.push(Point3::from(
-                    c + Vector3::new(
-                        rng.float(-0.5, 0.5),
-                        rng.float(-0.5, 0.5),
-                        rng.float(-0.5, 0.5),
-                    ),
+                    c + Vector3::new(float(-0.5, 0.5), float(-0.5, 0.5), float(-0.5, 0.5)),
                 ));
             }
             // Every 5th triangle degenerate (a repeated corner).
