@@ -7,7 +7,7 @@ use cga_collide::exact::{
 };
 use cga_collide::nalgebra::Point3;
 use cga_collide::query::baseline;
-use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs, Case};
+use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs};
 use cga_collide::testing::oracle::{self, Shape};
 use cga_collide::{Ball, Intersects, IntersectsWith, Segment, Sphere, Triangle};
 use proptest::prelude::*;
@@ -32,35 +32,6 @@ fn ti() -> impl Strategy<Value = Triangle> {
     (pi(), pi(), pi()).prop_map(|(a, b, c)| Triangle::new(a, b, c).unwrap())
 }
 
-fn run<K: Kernel>(c: &Case) -> bool {
-    match c {
-        Case::SegSeg(a, b) => a.intersects_with::<K>(b),
-        Case::SegTri(a, b) => a.intersects_with::<K>(b),
-        Case::SegSphere(a, b) => a.intersects_with::<K>(b),
-        Case::SegBall(a, b) => a.intersects_with::<K>(b),
-        Case::TriTri(a, b) => a.intersects_with::<K>(b),
-        Case::TriSphere(a, b) => a.intersects_with::<K>(b),
-        Case::TriBall(a, b) => a.intersects_with::<K>(b),
-        Case::SphereSphere(a, b) => a.intersects_with::<K>(b),
-        Case::BallBall(a, b) => a.intersects_with::<K>(b),
-    }
-}
-
-/// The same test with the arguments swapped (both orders must agree).
-fn run_swapped(c: &Case) -> bool {
-    match c {
-        Case::SegSeg(a, b) => b.intersects(a),
-        Case::SegTri(a, b) => b.intersects(a),
-        Case::SegSphere(a, b) => b.intersects(a),
-        Case::SegBall(a, b) => b.intersects(a),
-        Case::TriTri(a, b) => b.intersects(a),
-        Case::TriSphere(a, b) => b.intersects(a),
-        Case::TriBall(a, b) => b.intersects(a),
-        Case::SphereSphere(a, b) => b.intersects(a),
-        Case::BallBall(a, b) => b.intersects(a),
-    }
-}
-
 #[test]
 fn fixed_adversarial_set_has_zero_disagreements() {
     let set = adversarial_set(2026, 100);
@@ -69,10 +40,10 @@ fn fixed_adversarial_set_has_zero_disagreements() {
     let mut float_wrong = 0;
     for c in &set {
         let t = c.truth();
-        if run::<ExactKernel>(c) != t || run_swapped(c) != t {
+        if c.intersects_with::<ExactKernel>() != t || c.intersects_swapped() != t {
             wrong.push(*c);
         }
-        float_wrong += (run::<FloatKernel>(c) != t) as usize;
+        float_wrong += (c.intersects_with::<FloatKernel>() != t) as usize;
     }
     assert!(
         wrong.is_empty(),
@@ -96,8 +67,8 @@ proptest! {
     fn adversarial_cases_agree_with_oracle(seed in any::<u64>()) {
         for c in adversarial_set(seed, 1) {
             let t = c.truth();
-            prop_assert_eq!(run::<ExactKernel>(&c), t, "{:?}", c);
-            prop_assert_eq!(run_swapped(&c), t, "swapped {:?}", c);
+            prop_assert_eq!(c.intersects_with::<ExactKernel>(), t, "{:?}", c);
+            prop_assert_eq!(c.intersects_swapped(), t, "swapped {:?}", c);
         }
         for (a, b) in triangle_pairs(seed, 3) {
             let t = oracle::intersects(&Shape::from(&a), &Shape::from(&b));

@@ -109,9 +109,8 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
     let tris: Vec<[[f64; 3]; 3]> = (0..mesh.num_triangles())
         .map(|i| mesh.triangle(i).map(|p| [p.x, p.y, p.z]))
         .collect();
-    let partial = |b: &cga_collide::bvh::Aabb| {
-        tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max))
-    };
+    let partial =
+        |b: &cga_collide::bvh::Aabb| tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max));
     let mut level = vec![0u32; tree.len()];
     for i in 0..tree.len() {
         for ch in tree.children(i) {

@@ -18,64 +18,14 @@ use std::hint::black_box;
 
 const N: usize = 1024;
 
+/// Packs `items[i]` into lane `i` of every coefficient.
 macro_rules! pack {
-    ($lane:ty, $ty:ident { $($f:ident),* }, $items:expr) => {{
+    ($ty:ident, $lane:ty, $items:expr) => {{
         let items = $items;
-        $ty { $($f: <$lane>::from_fn(|i| items[i].$f)),* }
+        $ty::from_coefficients(core::array::from_fn(|k| {
+            <$lane>::from_fn(|i| items[i].coefficients()[k])
+        }))
     }};
-}
-
-macro_rules! vector_fields {
-    ($m:ident, $lane:ty, $items:expr) => {
-        $m!($lane, Vector { e1, e2, e3, e4, e5 }, $items)
-    };
-}
-macro_rules! rotor_fields {
-    ($m:ident, $lane:ty, $items:expr) => {
-        $m!(
-            $lane,
-            Rotor {
-                s,
-                e12,
-                e13,
-                e14,
-                e15,
-                e23,
-                e24,
-                e25,
-                e34,
-                e35,
-                e45
-            },
-            $items
-        )
-    };
-}
-macro_rules! even_fields {
-    ($m:ident, $lane:ty, $items:expr) => {
-        $m!(
-            $lane,
-            Even {
-                s,
-                e12,
-                e13,
-                e14,
-                e15,
-                e23,
-                e24,
-                e25,
-                e34,
-                e35,
-                e45,
-                e1234,
-                e1235,
-                e1245,
-                e1345,
-                e2345
-            },
-            $items
-        )
-    };
 }
 
 /// A small deterministic generator (xorshift), values in [-1, 1).
@@ -98,102 +48,26 @@ struct Data<T> {
 
 fn data64() -> Data<f64> {
     let mut rng = Rng(0x9e3779b97f4a7c15);
-    let mut v = || Vector::new(rng.next(), rng.next(), rng.next(), rng.next(), rng.next());
+    let mut v = || Vector::from_coefficients(core::array::from_fn(|_| rng.next()));
     let a = (0..N).map(|_| v()).collect();
     let b = (0..N).map(|_| v()).collect();
     let mut rng = Rng(12345);
     let r = (0..N)
-        .map(|_| {
-            Rotor::new(
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-            )
-        })
+        .map(|_| Rotor::from_coefficients(core::array::from_fn(|_| rng.next())))
         .collect();
     let e = (0..N)
-        .map(|_| {
-            Even::new(
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-                rng.next(),
-            )
-        })
+        .map(|_| Even::from_coefficients(core::array::from_fn(|_| rng.next())))
         .collect();
     Data { a, b, r, e }
 }
 
 fn to32(d: &Data<f64>) -> Data<f32> {
-    let v = |x: &Vector<f64>| {
-        Vector::new(
-            x.e1 as f32,
-            x.e2 as f32,
-            x.e3 as f32,
-            x.e4 as f32,
-            x.e5 as f32,
-        )
-    };
-    let r = |x: &Rotor<f64>| {
-        Rotor::new(
-            x.s as f32,
-            x.e12 as f32,
-            x.e13 as f32,
-            x.e14 as f32,
-            x.e15 as f32,
-            x.e23 as f32,
-            x.e24 as f32,
-            x.e25 as f32,
-            x.e34 as f32,
-            x.e35 as f32,
-            x.e45 as f32,
-        )
-    };
-    let e = |x: &Even<f64>| {
-        Even::new(
-            x.s as f32,
-            x.e12 as f32,
-            x.e13 as f32,
-            x.e14 as f32,
-            x.e15 as f32,
-            x.e23 as f32,
-            x.e24 as f32,
-            x.e25 as f32,
-            x.e34 as f32,
-            x.e35 as f32,
-            x.e45 as f32,
-            x.e1234 as f32,
-            x.e1235 as f32,
-            x.e1245 as f32,
-            x.e1345 as f32,
-            x.e2345 as f32,
-        )
-    };
+    let f32_of = |x: f64| x as f32;
     Data {
-        a: d.a.iter().map(v).collect(),
-        b: d.b.iter().map(v).collect(),
-        r: d.r.iter().map(r).collect(),
-        e: d.e.iter().map(e).collect(),
+        a: d.a.iter().map(|x| x.map(f32_of)).collect(),
+        b: d.b.iter().map(|x| x.map(f32_of)).collect(),
+        r: d.r.iter().map(|x| x.map(f32_of)).collect(),
+        e: d.e.iter().map(|x| x.map(f32_of)).collect(),
     }
 }
 
@@ -204,20 +78,14 @@ macro_rules! packed {
         Data::<$lane> {
             a: d.a
                 .chunks($width)
-                .map(|c| vector_fields!(pack, $lane, c))
+                .map(|c| pack!(Vector, $lane, c))
                 .collect(),
             b: d.b
                 .chunks($width)
-                .map(|c| vector_fields!(pack, $lane, c))
+                .map(|c| pack!(Vector, $lane, c))
                 .collect(),
-            r: d.r
-                .chunks($width)
-                .map(|c| rotor_fields!(pack, $lane, c))
-                .collect(),
-            e: d.e
-                .chunks($width)
-                .map(|c| even_fields!(pack, $lane, c))
-                .collect(),
+            r: d.r.chunks($width).map(|c| pack!(Rotor, $lane, c)).collect(),
+            e: d.e.chunks($width).map(|c| pack!(Even, $lane, c)).collect(),
         }
     }};
 }
@@ -270,11 +138,7 @@ fn check(d64: &Data<f64>, l64: &Data<F64x4>, d32: &Data<f32>, l32: &Data<F32x8>)
         r: vec![],
         e: d32.e.iter().rev().copied().collect::<Vec<_>>(),
     };
-    let lrev: Vec<Even<F32x8>> = rev
-        .e
-        .chunks(8)
-        .map(|c| even_fields!(pack, F32x8, c))
-        .collect();
+    let lrev: Vec<Even<F32x8>> = rev.e.chunks(8).map(|c| pack!(Even, F32x8, c)).collect();
     for (k, (x, y)) in l32.e.iter().zip(&lrev).enumerate() {
         l[k] = *x * *y;
     }

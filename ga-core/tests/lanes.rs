@@ -6,36 +6,14 @@ use ga_core::prelude::*;
 use ga_core::scalar::lanes::{F32x8, F64x4};
 use proptest::prelude::*;
 
-/// Packs `items[i]` into lane `i` of every field.
+/// Packs `items[i]` into lane `i` of every coefficient.
 macro_rules! pack {
-    ($lane:ty, $ty:ident { $($f:ident),* }, $items:expr) => {{
+    ($ty:ident, $lane:ty, $items:expr) => {{
         let items = &$items;
-        $ty { $($f: <$lane>::from_fn(|i| items[i].$f)),* }
+        $ty::from_coefficients(core::array::from_fn(|k| {
+            <$lane>::from_fn(|i| items[i].coefficients()[k])
+        }))
     }};
-}
-
-/// Lane `i` of every field.
-macro_rules! unpack {
-    ($ty:ident { $($f:ident),* }, $v:expr, $i:expr) => {
-        $ty { $($f: $v.$f.lanes()[$i]),* }
-    };
-}
-
-fn vec64(c: [f64; 5]) -> Vector<f64> {
-    Vector::new(c[0], c[1], c[2], c[3], c[4])
-}
-
-fn rotor64(c: [f64; 11]) -> Rotor<f64> {
-    Rotor::new(
-        c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10],
-    )
-}
-
-fn even64(c: [f64; 16]) -> Even<f64> {
-    Even::new(
-        c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13],
-        c[14], c[15],
-    )
 }
 
 proptest! {
@@ -46,11 +24,16 @@ proptest! {
         r in prop::array::uniform4(prop::array::uniform11(-2.0f64..2.0)),
         e in prop::array::uniform4(prop::array::uniform16(-2.0f64..2.0)),
     ) {
-        let (a, b, r, e) = (a.map(vec64), b.map(vec64), r.map(rotor64), e.map(even64));
-        let la = pack!(F64x4, Vector { e1, e2, e3, e4, e5 }, a);
-        let lb = pack!(F64x4, Vector { e1, e2, e3, e4, e5 }, b);
-        let lr = pack!(F64x4, Rotor { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, r);
-        let le = pack!(F64x4, Even { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345 }, e);
+        let (a, b, r, e) = (
+            a.map(Vector::from_coefficients),
+            b.map(Vector::from_coefficients),
+            r.map(Rotor::from_coefficients),
+            e.map(Even::from_coefficients),
+        );
+        let la = pack!(Vector, F64x4, a);
+        let lb = pack!(Vector, F64x4, b);
+        let lr = pack!(Rotor, F64x4, r);
+        let le = pack!(Even, F64x4, e);
         let gp = la * lb;
         let wedge: Bivector<F64x4> = la ^ lb;
         let dot = la.scalar_product(&lb);
@@ -58,13 +41,13 @@ proptest! {
         let ee = le * le;
         let inv = le.versor_inverse();
         for i in 0..4 {
-            prop_assert_eq!(unpack!(Rotor { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, gp, i), a[i] * b[i]);
-            prop_assert_eq!(unpack!(Bivector { e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, wedge, i), a[i] ^ b[i]);
+            prop_assert_eq!(gp.map(|c| c.lanes()[i]), a[i] * b[i]);
+            prop_assert_eq!(wedge.map(|c| c.lanes()[i]), a[i] ^ b[i]);
             prop_assert_eq!(dot.lanes()[i], a[i].scalar_product(&b[i]));
-            prop_assert_eq!(unpack!(Vector { e1, e2, e3, e4, e5 }, sandwich, i), r[i].sandwich_unit(&a[i]));
-            prop_assert_eq!(unpack!(Even { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345 }, ee, i), e[i] * e[i]);
+            prop_assert_eq!(sandwich.map(|c| c.lanes()[i]), r[i].sandwich_unit(&a[i]));
+            prop_assert_eq!(ee.map(|c| c.lanes()[i]), e[i] * e[i]);
             if let (Some(li), Some(si)) = (inv, e[i].versor_inverse()) {
-                prop_assert_eq!(unpack!(Even { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345 }, li, i), si);
+                prop_assert_eq!(li.map(|c| c.lanes()[i]), si);
             }
         }
     }
@@ -74,17 +57,17 @@ proptest! {
         a in prop::array::uniform8(prop::array::uniform5(-1e3f32..1e3)),
         b in prop::array::uniform8(prop::array::uniform5(-1e3f32..1e3)),
     ) {
-        let a = a.map(|c| Vector::new(c[0], c[1], c[2], c[3], c[4]));
-        let b = b.map(|c| Vector::new(c[0], c[1], c[2], c[3], c[4]));
-        let la = pack!(F32x8, Vector { e1, e2, e3, e4, e5 }, a);
-        let lb = pack!(F32x8, Vector { e1, e2, e3, e4, e5 }, b);
+        let a = a.map(Vector::from_coefficients);
+        let b = b.map(Vector::from_coefficients);
+        let la = pack!(Vector, F32x8, a);
+        let lb = pack!(Vector, F32x8, b);
         let gp = la * lb;
         let r = gp.reverse();
         let sandwich = gp.sandwich_unit(&la);
         for i in 0..8 {
-            prop_assert_eq!(unpack!(Rotor { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, gp, i), a[i] * b[i]);
-            prop_assert_eq!(unpack!(Rotor { s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45 }, r, i), (a[i] * b[i]).reverse());
-            prop_assert_eq!(unpack!(Vector { e1, e2, e3, e4, e5 }, sandwich, i), (a[i] * b[i]).sandwich_unit(&a[i]));
+            prop_assert_eq!(gp.map(|c| c.lanes()[i]), a[i] * b[i]);
+            prop_assert_eq!(r.map(|c| c.lanes()[i]), (a[i] * b[i]).reverse());
+            prop_assert_eq!(sandwich.map(|c| c.lanes()[i]), (a[i] * b[i]).sandwich_unit(&a[i]));
         }
     }
 }
@@ -119,28 +102,7 @@ fn lane_semantics() {
     let s = Even::new(
         2.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0,
     );
-    let l = pack!(
-        F64x4,
-        Even {
-            s,
-            e12,
-            e13,
-            e14,
-            e15,
-            e23,
-            e24,
-            e25,
-            e34,
-            e35,
-            e45,
-            e1234,
-            e1235,
-            e1245,
-            e1345,
-            e2345
-        },
-        [s; 4]
-    );
+    let l = s.map(F64x4::splat);
     let m = ga_core::cga::Multivector::from(l)
         .general_inverse()
         .unwrap();

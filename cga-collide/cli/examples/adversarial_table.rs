@@ -1,30 +1,15 @@
 //! Prints the README table: on the fixed adversarial set, how often each method is wrong
 //! (against the independent exact oracle).
 //!
-//! Run: `cargo run --release -p cga-collide --example adversarial_table`
+//! Run: `cargo run --release -p cga-cli --example adversarial_table`
 
-use cga_collide::exact::{ExactKernel, FloatKernel, Kernel};
+use cga_collide::exact::{ExactKernel, FloatKernel};
 use cga_collide::query::baseline;
 use cga_collide::testing::adversarial::{adversarial_set, Case};
-use cga_collide::IntersectsWith;
 
 /// The seed and size of the fixed set.
 const SEED: u64 = 2026;
 const PER_KIND: usize = 1000;
-
-fn run<K: Kernel>(c: &Case) -> bool {
-    match c {
-        Case::SegSeg(a, b) => a.intersects_with::<K>(b),
-        Case::SegTri(a, b) => a.intersects_with::<K>(b),
-        Case::SegSphere(a, b) => a.intersects_with::<K>(b),
-        Case::SegBall(a, b) => a.intersects_with::<K>(b),
-        Case::TriTri(a, b) => a.intersects_with::<K>(b),
-        Case::TriSphere(a, b) => a.intersects_with::<K>(b),
-        Case::TriBall(a, b) => a.intersects_with::<K>(b),
-        Case::SphereSphere(a, b) => a.intersects_with::<K>(b),
-        Case::BallBall(a, b) => a.intersects_with::<K>(b),
-    }
-}
 
 fn reference(c: &Case) -> Option<bool> {
     Some(match c {
@@ -71,8 +56,8 @@ fn main() {
                 has_ref = true;
                 refw += (r != truth) as usize;
             }
-            fw += (run::<FloatKernel>(c) != truth) as usize;
-            ew += (run::<ExactKernel>(c) != truth) as usize;
+            fw += (c.intersects_with::<FloatKernel>() != truth) as usize;
+            ew += (c.intersects_with::<ExactKernel>() != truth) as usize;
         }
         let pct = |w: usize| format!("{w} ({:.1} %)", 100.0 * w as f64 / n as f64);
         let r = if has_ref {

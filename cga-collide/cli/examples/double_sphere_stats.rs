@@ -1,7 +1,7 @@
 //! Decision statistics of the double-sphere tree on random placements (no timing: use the
 //! `double_sphere` benchmark for that).
 //!
-//! `cargo run -p cga-collide --release --example double_sphere_stats -- [placements] [radius] [level]`
+//! `cargo run -p cga-cli --release --example double_sphere_stats -- [placements] [radius] [level]`
 //!
 //! For each of the paper's four pairs and both inner-sphere kinds: how many placements collide,
 //! how each answer was decided, the mean numbers of sphere and triangle tests, and a check of

@@ -9,7 +9,7 @@
 //! centre) then descended simultaneously), agreement with the exact answer, and for the octree
 //! trees (an approximation from outside) their false positives; false negatives must be 0.
 //!
-//! Run: `cargo run --release -p cga-collide --example hierarchy_compare [PLACEMENTS] [SVG]`
+//! Run: `cargo run --release -p cga-cli --example hierarchy_compare [PLACEMENTS] [SVG]`
 //! (default 20000 placements per pair and size). Prints markdown; writes the plot when SVG is
 //! given.
 

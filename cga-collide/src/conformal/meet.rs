@@ -636,6 +636,19 @@ mod tests {
         t.float_wrong += usize::from(float != exact);
     }
 
+    /// Tallies one case: the certified filter, plain `f64` and exact `Rational` run the same
+    /// classification function on the same arguments.
+    macro_rules! tally_kinds {
+        ($t:expr, $kind:ident($($arg:expr),*)) => {
+            tally(
+                $t,
+                $kind::<ErrF64>($($arg),*),
+                $kind::<f64>($($arg),*),
+                $kind::<Rational>($($arg),*),
+            )
+        };
+    }
+
     fn scale(r: &mut Lcg) -> (f64, bool) {
         let k = [0, 0, 0, -30, 40, -500, 500][(r.next() % 7) as usize];
         (2f64.powi(k), r.next().is_multiple_of(4))
@@ -675,11 +688,9 @@ mod tests {
             let (Ok(la), Ok(lb)) = (Line::from_point_direction(a, d), b) else {
                 continue;
             };
-            tally(
+            tally_kinds!(
                 &mut t,
-                ll_kind::<ErrF64>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
-                ll_kind::<f64>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
-                ll_kind::<Rational>(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors()),
+                ll_kind(&la.blade_in(), &lb.blade_in(), lb.spanning_vectors())
             );
         }
         rows.push(("line–line", t));
@@ -697,12 +708,7 @@ mod tests {
                 _ => Line::from_point_direction(nudge(r.point() * s, nu), r.point().coords),
             };
             let Ok(l) = l else { continue };
-            tally(
-                &mut t,
-                lp_kind::<ErrF64>(&l.blade_in(), &p.ipns_in()),
-                lp_kind::<f64>(&l.blade_in(), &p.ipns_in()),
-                lp_kind::<Rational>(&l.blade_in(), &p.ipns_in()),
-            );
+            tally_kinds!(&mut t, lp_kind(&l.blade_in(), &p.ipns_in()));
         }
         rows.push(("line–plane", t));
 
@@ -720,12 +726,7 @@ mod tests {
                 continue;
             };
             let sp = Sphere::from_centre_radius(c * s, rad * s).unwrap();
-            tally(
-                &mut t,
-                ls_kind::<ErrF64>(&l.blade_in(), &sp.ipns_in()),
-                ls_kind::<f64>(&l.blade_in(), &sp.ipns_in()),
-                ls_kind::<Rational>(&l.blade_in(), &sp.ipns_in()),
-            );
+            tally_kinds!(&mut t, ls_kind(&l.blade_in(), &sp.ipns_in()));
         }
         rows.push(("line–sphere", t));
 
@@ -745,12 +746,7 @@ mod tests {
                 _ => Plane::from_points(nudge(r.point() * s, nu), r.point() * s, r.point() * s),
             };
             let Ok(q) = q else { continue };
-            tally(
-                &mut t,
-                pp_kind::<ErrF64>(&p.ipns_in(), &q.ipns_in()),
-                pp_kind::<f64>(&p.ipns_in(), &q.ipns_in()),
-                pp_kind::<Rational>(&p.ipns_in(), &q.ipns_in()),
-            );
+            tally_kinds!(&mut t, pp_kind(&p.ipns_in(), &q.ipns_in()));
         }
         rows.push(("plane–plane", t));
 
@@ -767,12 +763,7 @@ mod tests {
                 continue;
             };
             let sp = Sphere::from_centre_radius(nudge(c * s, nu), rad * s).unwrap();
-            tally(
-                &mut t,
-                sp_kind::<ErrF64>(&sp.ipns_in(), &p.ipns_in()),
-                sp_kind::<f64>(&sp.ipns_in(), &p.ipns_in()),
-                sp_kind::<Rational>(&sp.ipns_in(), &p.ipns_in()),
-            );
+            tally_kinds!(&mut t, sp_kind(&sp.ipns_in(), &p.ipns_in()));
         }
         rows.push(("sphere–plane", t));
 
@@ -790,12 +781,7 @@ mod tests {
             };
             let a = Sphere::from_centre_radius(c1 * s, r1 * s).unwrap();
             let b = Sphere::from_centre_radius(nudge((c1 + e) * s, nu), r2 * s).unwrap();
-            tally(
-                &mut t,
-                ss_kind::<ErrF64>(&a.ipns_in(), &b.ipns_in()),
-                ss_kind::<f64>(&a.ipns_in(), &b.ipns_in()),
-                ss_kind::<Rational>(&a.ipns_in(), &b.ipns_in()),
-            );
+            tally_kinds!(&mut t, ss_kind(&a.ipns_in(), &b.ipns_in()));
         }
         rows.push(("sphere–sphere", t));
 

@@ -10,6 +10,8 @@
 
 use nalgebra::Point3;
 
+use crate::exact::Kernel;
+use crate::query::{Intersects, IntersectsWith};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 /// A small deterministic pseudo-random generator (SplitMix64).
@@ -205,6 +207,23 @@ pub enum Case {
     BallBall(Ball, Ball),
 }
 
+/// Runs `$e` with `$a`, `$b` bound to the two shapes of any case.
+macro_rules! on_pair {
+    ($case:expr, $a:ident, $b:ident => $e:expr) => {
+        match $case {
+            Case::SegSeg($a, $b) => $e,
+            Case::SegTri($a, $b) => $e,
+            Case::SegSphere($a, $b) => $e,
+            Case::SegBall($a, $b) => $e,
+            Case::TriTri($a, $b) => $e,
+            Case::TriSphere($a, $b) => $e,
+            Case::TriBall($a, $b) => $e,
+            Case::SphereSphere($a, $b) => $e,
+            Case::BallBall($a, $b) => $e,
+        }
+    };
+}
+
 impl Case {
     /// A short name of the pair kind.
     pub fn kind(&self) -> &'static str {
@@ -225,18 +244,18 @@ impl Case {
     /// code with the tests it checks.
     pub fn truth(&self) -> bool {
         use crate::testing::oracle::{self, Shape};
-        let (a, b): (Shape, Shape) = match self {
-            Case::SegSeg(a, b) => (a.into(), b.into()),
-            Case::SegTri(a, b) => (a.into(), b.into()),
-            Case::SegSphere(a, b) => (a.into(), b.into()),
-            Case::SegBall(a, b) => (a.into(), b.into()),
-            Case::TriTri(a, b) => (a.into(), b.into()),
-            Case::TriSphere(a, b) => (a.into(), b.into()),
-            Case::TriBall(a, b) => (a.into(), b.into()),
-            Case::SphereSphere(a, b) => (a.into(), b.into()),
-            Case::BallBall(a, b) => (a.into(), b.into()),
-        };
-        oracle::intersects(&a, &b)
+        on_pair!(self, a, b => oracle::intersects(&Shape::from(a), &Shape::from(b)))
+    }
+
+    /// The library's test of the pair with the sign kernel `K` (`a.intersects_with::<K>(b)`).
+    pub fn intersects_with<K: Kernel>(&self) -> bool {
+        on_pair!(self, a, b => a.intersects_with::<K>(b))
+    }
+
+    /// The library's exact test with the arguments swapped (`b.intersects(a)`); both orders
+    /// must give the same answer.
+    pub fn intersects_swapped(&self) -> bool {
+        on_pair!(self, a, b => b.intersects(a))
     }
 }
 

@@ -115,6 +115,12 @@ pub(super) fn emit_type(alg: &Algebra, index: usize, t: &TypeModel) -> TokenStre
             pub fn into_coefficients(self) -> [T; #count] {
                 [#(self.#fields),*]
             }
+            /// The same value over another scalar type, each coefficient converted by `f`
+            /// (in field order), e.g. `v.map(|x| x as f32)` or `v.map(Rational::from)`.
+            #[inline]
+            pub fn map<U>(self, mut f: impl FnMut(T) -> U) -> #name<U> {
+                #name { #(#fields: f(self.#fields)),* }
+            }
             /// Builds a value from its coefficients in canonical blade order.
             #[allow(clippy::too_many_arguments)]
             #[inline]

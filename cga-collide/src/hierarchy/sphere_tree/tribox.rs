@@ -98,7 +98,7 @@ pub fn triangle_meets_box(t: &[[f64; 3]; 3], lo: &[f64; 3], hi: &[f64; 3]) -> bo
 mod tests {
     use super::*;
     use crate::bvh::Aabb;
-    use crate::{Intersects, Segment, Triangle};
+    use crate::{Intersects, Segment, TriMesh, Triangle};
     use nalgebra::Point3;
     use proptest::prelude::*;
 
@@ -110,42 +110,19 @@ mod tests {
         if t.iter().any(inside) {
             return true;
         }
-        let c = |m: usize| {
-            Point3::new(
-                if m & 1 == 0 { lo[0] } else { hi[0] },
-                if m & 2 == 0 { lo[1] } else { hi[1] },
-                if m & 4 == 0 { lo[2] } else { hi[2] },
-            )
-        };
-        let faces = [
-            [0, 1, 3, 2],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 3, 7, 6],
-            [0, 2, 6, 4],
-            [1, 3, 7, 5],
-        ];
         let p = |v: &[f64; 3]| Point3::new(v[0], v[1], v[2]);
-        let tri = Triangle::new(p(&t[0]), p(&t[1]), p(&t[2])).unwrap();
-        faces.iter().any(|f| {
-            let a = Triangle::new(c(f[0]), c(f[1]), c(f[2])).unwrap();
-            let b = Triangle::new(c(f[0]), c(f[2]), c(f[3])).unwrap();
-            tri.intersects(&a) || tri.intersects(&b)
-        }) || {
-            // Degenerate triangles: also test the edges as segments (covered by the triangle
-            // tests already; kept for clarity).
-            (0..3).any(|m| {
-                let s = Segment::new(p(&t[m]), p(&t[(m + 1) % 3])).unwrap();
-                faces.iter().any(|f| {
-                    Triangle::new(c(f[0]), c(f[1]), c(f[2]))
-                        .unwrap()
-                        .intersects(&s)
-                        || Triangle::new(c(f[0]), c(f[2]), c(f[3]))
-                            .unwrap()
-                            .intersects(&s)
-                })
-            })
-        }
+        let surface = TriMesh::cuboid(p(lo), p(hi)).expect("a box with lo <= hi");
+        let tri = Triangle::new(p(&t[0]), p(&t[1]), p(&t[2])).expect("finite vertices");
+        // Degenerate triangles: also test the edges as segments (covered by the triangle
+        // tests already; kept for clarity).
+        let edges: Vec<Segment> = (0..3)
+            .map(|m| Segment::new(p(&t[m]), p(&t[(m + 1) % 3])).expect("finite vertices"))
+            .collect();
+        (0..surface.num_triangles()).any(|i| {
+            let [a, b, c] = surface.triangle(i);
+            let face = Triangle::new(a, b, c).expect("finite vertices");
+            tri.intersects(&face) || edges.iter().any(|e| face.intersects(e))
+        })
     }
 
     /// Coordinates on a coarse grid, so that touching and coplanar cases are common.
