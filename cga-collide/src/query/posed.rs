@@ -547,11 +547,8 @@ impl Collider {
             let tasks = pair.split(threads * TASKS_PER_CORE);
             tasks
                 .par_iter()
-                .map(|&task| pair.collect_pairs(&[task]))
-                .reduce(Vec::new, |mut x, y| {
-                    x.extend(y);
-                    x
-                })
+                .flat_map_iter(|&task| pair.collect_pairs(&[task]))
+                .collect()
         };
         out.sort_unstable();
         Ok(out)
