@@ -9,7 +9,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum GeometryError {
     /// A coordinate of a point argument is NaN or infinite.
-    #[error("{shape}::new: argument `{argument}` has a non-finite {axis} coordinate ({value})")]
+    #[error("{shape}::new: argument `{argument}` has a non-finite {axis} coordinate ({value}); coordinates must be finite numbers")]
     NonFiniteCoordinate {
         /// The shape being built (`"Segment"`, `"Triangle"`, `"Sphere"`, `"Ball"`).
         shape: &'static str,
@@ -21,7 +21,7 @@ pub enum GeometryError {
         value: f64,
     },
     /// A radius is NaN or infinite.
-    #[error("{shape}::new: radius is not finite ({value})")]
+    #[error("{shape}::new: radius is not finite ({value}); give a finite radius >= 0")]
     NonFiniteRadius {
         /// The shape being built.
         shape: &'static str,
@@ -29,7 +29,7 @@ pub enum GeometryError {
         value: f64,
     },
     /// A radius is negative.
-    #[error("{shape}::new: radius is negative ({value})")]
+    #[error("{shape}::new: radius is negative ({value}); give a finite radius >= 0")]
     NegativeRadius {
         /// The shape being built.
         shape: &'static str,
@@ -38,7 +38,7 @@ pub enum GeometryError {
     },
     /// An input of a conformal constructor (a coordinate, a scalar or a blade coefficient) is
     /// NaN or infinite.
-    #[error("{constructor}: argument `{argument}` has a non-finite value ({value})")]
+    #[error("{constructor}: argument `{argument}` has a non-finite value ({value}); give finite numbers")]
     NonFiniteInput {
         /// The constructor, e.g. `"conformal::Line::from_points"`.
         constructor: &'static str,

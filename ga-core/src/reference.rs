@@ -74,7 +74,7 @@ pub const MAX_GENERATORS: usize = 10;
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum ReferenceError {
     /// The signature has more than [`MAX_GENERATORS`] entries.
-    #[error("signature has {0} generators; the dense reference supports at most {MAX_GENERATORS}")]
+    #[error("signature has {0} generators; the dense reference supports at most {MAX_GENERATORS} (its size grows as 2^n): use a smaller algebra")]
     TooManyGenerators(usize),
     /// A signature entry is not `+1`, `-1` or `0`.
     #[error("signature entry {index} is {value}; entries must be +1, -1 or 0")]
@@ -85,7 +85,7 @@ pub enum ReferenceError {
         value: i8,
     },
     /// A generator index is not below the number of generators.
-    #[error("generator index {index} is out of range for a signature of {n} generators")]
+    #[error("generator index {index} is out of range for a signature of {n} generators (indices are 0-based: 0 to n - 1)")]
     GeneratorOutOfRange {
         /// The requested (0-based) generator.
         index: usize,
@@ -93,7 +93,7 @@ pub enum ReferenceError {
         n: usize,
     },
     /// A blade bitmask has bits beyond the number of generators.
-    #[error("blade mask {mask:#b} is out of range for a signature of {n} generators")]
+    #[error("blade mask {mask:#b} is out of range for a signature of {n} generators (bit i is generator i: masks below 2^n)")]
     MaskOutOfRange {
         /// The requested bitmask.
         mask: usize,
@@ -101,7 +101,7 @@ pub enum ReferenceError {
         n: usize,
     },
     /// A coefficient or name list has the wrong length.
-    #[error("expected {expected} {what}, got {got}")]
+    #[error("expected {expected} {what} (one per blade of the signature), got {got}")]
     WrongLength {
         /// What was counted ("coefficients", "basis names").
         what: &'static str,
@@ -111,7 +111,7 @@ pub enum ReferenceError {
         got: usize,
     },
     /// Two operands have different signatures.
-    #[error("signature mismatch: left operand has {left:?}, right operand has {right:?}")]
+    #[error("signature mismatch: left operand has {left:?}, right operand has {right:?}; both operands must come from the same Signature")]
     SignatureMismatch {
         /// Signature of the left operand.
         left: Vec<i8>,

@@ -131,11 +131,13 @@ fn double_spheres(args: DoubleSpheresArgs) -> Result<()> {
     let pairs = parse_pairs(&args.pairs)?;
     for &f in &args.collide {
         if !(f > 0.0 && f < 1.0) {
-            bail!("collision fraction {f} must lie strictly between 0 and 1");
+            bail!(
+                "--collide {f}: a collision fraction must lie strictly between 0 and 1, e.g. 0.25"
+            );
         }
     }
     if args.placements == 0 {
-        bail!("--placements must be at least 1");
+        bail!("--placements 0: give at least 1");
     }
     let kinds: Vec<InnerSphereKind> = match args.inner {
         InnerArg::Centroid => vec![InnerSphereKind::Centroid],

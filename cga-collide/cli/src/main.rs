@@ -3,6 +3,7 @@
 //! `cga` with no arguments runs `cga collide` on built-in meshes (bunny00 vs a moved
 //! armadillo) and writes `collision.png`. See `cga --help`.
 
+mod device;
 mod distance;
 mod experiment_cmd;
 mod poses;
@@ -19,9 +20,10 @@ use std::time::{Duration, Instant};
 use anyhow::{bail, Context, Result};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::query::{self, Collider, Mode};
-use cga_collide::shape::mesh::TriMesh;
+use cga_collide::shape::mesh::{MeshError, TriMesh};
 use cga_collide::{Ball, Segment, Sphere, Triangle};
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use device::{DeviceArg, Gpu, Primitive};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
 
@@ -82,9 +84,15 @@ struct CollideArgs {
     /// Then translate B.
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
     translate: Option<[f64; 3]>,
-    /// How pairs are found.
+    /// How pairs are found (on the GPU too: every pair, or the candidate pairs of the trees).
     #[arg(long, value_enum, default_value_t = ModeArg::Bvh)]
     mode: ModeArg,
+    /// Where the exact tests run. `gpu` needs a wgpu adapter (a GPU driver, or Mesa's software
+    /// Vulkan driver lavapipe: package mesa-vulkan-drivers); it finds the intersecting pairs with
+    /// answers equal to the CPU's and reports how many pairs it flagged for exact re-decision on
+    /// the CPU. Not with --clearance, --contacts or --poses.
+    #[arg(long, value_enum, default_value_t = DeviceArg::Cpu)]
+    device: DeviceArg,
     /// Write the intersecting pairs, one `i j` per line (0-based triangle indices of A and B).
     #[arg(long, value_name = "FILE")]
     pairs: Option<PathBuf>,
@@ -135,9 +143,14 @@ struct QueryArgs {
     /// A ball (solid) `cx,cy,cz,r`.
     #[arg(long, value_parser = parse_numbers::<4>, allow_hyphen_values = true, group = "primitive")]
     ball: Option<[f64; 4]>,
-    /// How triangles are found.
-    #[arg(long, value_enum, default_value_t = ModeArg::Bvh)]
-    mode: ModeArg,
+    /// How triangles are found (default: bvh on the CPU; the GPU tests every triangle, brute).
+    #[arg(long, value_enum)]
+    mode: Option<ModeArg>,
+    /// Where the exact tests run. `gpu` needs a wgpu adapter (a GPU driver, or Mesa's software
+    /// Vulkan driver lavapipe: package mesa-vulkan-drivers); it tests every triangle, with
+    /// answers equal to the CPU's, and reports how many it flagged for exact re-decision.
+    #[arg(long, value_enum, default_value_t = DeviceArg::Cpu)]
+    device: DeviceArg,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
@@ -182,6 +195,7 @@ fn main() -> ExitCode {
             rotate: None,
             translate: None,
             mode: ModeArg::Bvh,
+            device: DeviceArg::Cpu,
             pairs: None,
             json: false,
             image: None,
@@ -213,7 +227,18 @@ fn load_mesh(spec: &str) -> Result<TriMesh> {
             _ => {}
         }
     }
-    TriMesh::load(path).context("cannot load a mesh")
+    match TriMesh::load(path) {
+        Ok(mesh) => Ok(mesh),
+        // No file and no mesh extension: most likely a mistyped built-in name.
+        Err(MeshError::UnknownFormat { .. }) if !path.exists() => bail!(
+            "{spec}: no such file, and not a built-in mesh (bunny, bunny00, armadillo); check \
+             the name, or the path of a .obj, .off, .ply or .stl file"
+        ),
+        Err(e) if path.exists() => Err(e).context("cannot load a mesh"),
+        Err(e) => {
+            Err(e).context("no such file, and not a built-in mesh (bunny, bunny00, armadillo)")
+        }
+    }
 }
 
 fn spinner(message: &str) -> ProgressBar {
@@ -248,12 +273,35 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         args.image = args.image.or(Some(PathBuf::from("collision.png")));
     }
     let (Some(a_spec), Some(b_spec)) = (args.a.as_deref(), args.b.as_deref()) else {
-        bail!("give two meshes (or none for the built-in demo)");
+        bail!(
+            "only one mesh given (`{}`): give two meshes A and B, or none for the built-in demo",
+            args.a.as_deref().or(args.b.as_deref()).unwrap_or_default()
+        );
     };
     if args.repeat == 0 {
-        bail!("--repeat must be at least 1");
+        bail!(
+            "--repeat 0: give at least 1 (how many times the query is timed; the best is reported)"
+        );
     }
-    let bar = spinner("loading meshes");
+    if args.device == DeviceArg::Gpu {
+        let given: Vec<&str> = [
+            (args.clearance.is_some(), "--clearance"),
+            (args.contacts.is_some(), "--contacts"),
+            (args.poses.is_some(), "--poses"),
+        ]
+        .into_iter()
+        .filter_map(|(given, name)| given.then_some(name))
+        .collect();
+        device::reject_unsupported(&given)?;
+    }
+    if let Some(c) = args.clearance {
+        if !(c >= 0.0 && c.is_finite()) {
+            bail!("--clearance {c}: give a finite distance >= 0 (0 counts the touching pairs)");
+        }
+    }
+    let bar = spinner("opening the device");
+    let gpu = device::open(args.device)?;
+    bar.set_message("loading meshes");
     let mut a = load_mesh(a_spec)?;
     let mut b = load_mesh(b_spec)?;
     if args.unit {
@@ -272,7 +320,7 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     }
     let b = b
         .transformed(&placement(args.rotate, args.translate))
-        .context("placing mesh B")?;
+        .context("placing mesh B with --rotate and --translate (give smaller values)")?;
     bar.set_message("building hierarchies");
     let start = Instant::now();
     let ca = Collider::new(a);
@@ -280,36 +328,11 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     let build = start.elapsed();
     bar.set_message("finding intersecting pairs");
     let mode: Mode = args.mode.into();
-    let mut best = Duration::MAX;
-    let mut pairs = Vec::new();
-    if let Some(c) = args.clearance {
-        if !(c >= 0.0 && c.is_finite()) {
-            bail!("--clearance must be a finite number >= 0, got {c}");
-        }
-    }
-    for _ in 0..args.repeat {
-        let t = Instant::now();
-        pairs = match args.clearance {
-            Some(c) => query::mesh_pairs_within_distance(&ca, &cb, c),
-            None => ca.intersecting_pairs(&cb, mode),
-        };
-        best = best.min(t.elapsed());
-    }
-    let mut best_first = Duration::MAX;
-    let mut collides = false;
-    for _ in 0..args.repeat {
-        let t = Instant::now();
-        collides = ca.collides(&cb, mode);
-        best_first = best_first.min(t.elapsed());
-    }
-    let touching = if args.clearance.is_some() {
-        !ca.intersecting_pairs(&cb, mode).is_empty()
-    } else {
-        !pairs.is_empty()
+    let found = match &gpu {
+        None => cpu_pairs(&ca, &cb, mode, args.clearance, args.repeat)?,
+        Some(gpu) => gpu_pairs(gpu, &ca, &cb, args.mode, args.repeat)?,
     };
-    if collides != touching {
-        bail!("internal inconsistency: first-hit and all-pairs disagree (please report)");
-    }
+    let (pairs, collides, best) = (found.pairs, found.collides, found.best);
     // With no surface contact, a closed mesh may still lie wholly inside the other.
     let inside = |inner: &Collider, outer: &Collider| {
         !collides
@@ -360,15 +383,19 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         ModeArg::Bvh => "bvh",
     };
     let millis = |d: Duration| d.as_secs_f64() * 1e3;
+    let device_name = device::name(gpu.as_ref());
     if args.json {
         let value = json!({
             "collides": collides,
             "pairs": pairs.len(),
             "mode": mode_name,
+            "device": device_name,
+            "tested": found.device_stats.map(|s| s.0),
+            "flagged": found.device_stats.map(|s| s.1),
             "triangles": [ca.mesh().num_triangles(), cb.mesh().num_triangles()],
             "build_millis": millis(build),
             "millis": millis(best),
-            "first_hit_millis": millis(best_first),
+            "first_hit_millis": found.best_first.map(millis),
             "a_inside_b": a_inside_b,
             "b_inside_a": b_inside_a,
             "solids_collide": collides || a_inside_b || b_inside_a,
@@ -381,7 +408,7 @@ fn collide(mut args: CollideArgs) -> Result<()> {
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
         println!(
-            "{a_spec} ({} triangles) vs {b_spec} ({} triangles), mode {mode_name}",
+            "{a_spec} ({} triangles) vs {b_spec} ({} triangles), mode {mode_name}, device {device_name}",
             ca.mesh().num_triangles(),
             cb.mesh().num_triangles()
         );
@@ -408,18 +435,107 @@ fn collide(mut args: CollideArgs) -> Result<()> {
                 "the surfaces do not meet, but {inner} lies wholly inside {outer} (solids collide)"
             );
         }
-        println!(
-            "build {:.1} ms; all pairs {:.2} ms; first hit {:.3} ms (best of {})",
-            millis(build),
-            millis(best),
-            millis(best_first),
-            args.repeat
-        );
+        if let Some((tested, flagged)) = found.device_stats {
+            println!(
+                "{tested} triangle pairs tested on the device, {flagged} flagged and re-decided exactly on the CPU"
+            );
+        }
+        match found.best_first {
+            Some(first) => println!(
+                "build {:.1} ms; all pairs {:.2} ms; first hit {:.3} ms (best of {})",
+                millis(build),
+                millis(best),
+                millis(first),
+                args.repeat
+            ),
+            None => println!(
+                "build {:.1} ms; all pairs {:.2} ms on the device (best of {})",
+                millis(build),
+                millis(best),
+                args.repeat
+            ),
+        }
         if let Some(p) = &args.image {
             println!("image: {}", p.display());
         }
     }
     Ok(())
+}
+
+/// What `cga collide` found, and how long it took.
+struct Found {
+    /// The intersecting (or, with --clearance, the near) triangle pairs, sorted.
+    pairs: Vec<(u32, u32)>,
+    /// Whether the surfaces meet.
+    collides: bool,
+    /// Best time of the all-pairs query.
+    best: Duration,
+    /// Best time of the first-hit query (CPU only).
+    best_first: Option<Duration>,
+    /// Pairs tested on the device, and flagged by it (GPU only).
+    device_stats: Option<(u64, u64)>,
+}
+
+fn cpu_pairs(
+    ca: &Collider,
+    cb: &Collider,
+    mode: Mode,
+    clearance: Option<f64>,
+    repeat: u32,
+) -> Result<Found> {
+    let mut best = Duration::MAX;
+    let mut pairs = Vec::new();
+    for _ in 0..repeat {
+        let t = Instant::now();
+        pairs = match clearance {
+            Some(c) => query::mesh_pairs_within_distance(ca, cb, c),
+            None => ca.intersecting_pairs(cb, mode),
+        };
+        best = best.min(t.elapsed());
+    }
+    let mut best_first = Duration::MAX;
+    let mut collides = false;
+    for _ in 0..repeat {
+        let t = Instant::now();
+        collides = ca.collides(cb, mode);
+        best_first = best_first.min(t.elapsed());
+    }
+    let touching = if clearance.is_some() {
+        !ca.intersecting_pairs(cb, mode).is_empty()
+    } else {
+        !pairs.is_empty()
+    };
+    if collides != touching {
+        bail!("internal inconsistency: first-hit and all-pairs disagree (a bug: please report it with the command line and meshes)");
+    }
+    Ok(Found {
+        pairs,
+        collides,
+        best,
+        best_first: Some(best_first),
+        device_stats: None,
+    })
+}
+
+/// The intersecting pairs on the GPU: every pair (`brute`), or the box-overlap candidate pairs
+/// of the trees (`bvh`, found on the CPU and counted in the time).
+fn gpu_pairs(gpu: &Gpu, ca: &Collider, cb: &Collider, mode: ModeArg, repeat: u32) -> Result<Found> {
+    let mut best = Duration::MAX;
+    let mut answers = None;
+    for _ in 0..repeat {
+        let t = Instant::now();
+        let candidates = (mode == ModeArg::Bvh).then(|| ca.box_pairs_bvh(cb));
+        answers = Some(gpu.pairs(ca.mesh(), cb.mesh(), candidates.as_deref())?);
+        best = best.min(t.elapsed());
+    }
+    let answers = answers.context("--repeat must be at least 1")?;
+    Ok(Found {
+        collides: !answers.hits.is_empty(),
+        pairs: answers.hits,
+        best,
+        best_first: None,
+        device_stats: Some((answers.tested, answers.flagged)),
+    })
 }
 
 fn point(c: &[f64]) -> Point3<f64> {
@@ -431,39 +547,74 @@ fn query(args: QueryArgs) -> Result<()> {
     if args.unit {
         mesh = mesh.unit();
     }
-    let collider = Collider::new(mesh);
-    let mode: Mode = args.mode.into();
-    let start = Instant::now();
-    let (what, hits) = if let Some(s) = args.segment {
-        let seg = Segment::new(point(&s[0..3]), point(&s[3..6]))?;
-        ("segment", collider.segment_hits(&seg, mode))
+    let shape = if let Some(s) = args.segment {
+        Primitive::Segment(Segment::new(point(&s[0..3]), point(&s[3..6])).context("--segment")?)
     } else if let Some(t) = args.triangle {
-        let tri = Triangle::new(point(&t[0..3]), point(&t[3..6]), point(&t[6..9]))?;
-        ("triangle", collider.triangle_hits(&tri, mode))
+        Primitive::Triangle(
+            Triangle::new(point(&t[0..3]), point(&t[3..6]), point(&t[6..9]))
+                .context("--triangle")?,
+        )
     } else if let Some(s) = args.sphere {
-        let sphere = Sphere::new(point(&s[0..3]), s[3])?;
-        ("sphere", collider.sphere_hits(&sphere, mode))
+        Primitive::Sphere(Sphere::new(point(&s[0..3]), s[3]).context("--sphere")?)
     } else if let Some(s) = args.ball {
-        let ball = Ball::new(point(&s[0..3]), s[3])?;
-        ("ball", collider.ball_hits(&ball, mode))
+        Primitive::Ball(Ball::new(point(&s[0..3]), s[3]).context("--ball")?)
     } else {
-        bail!("give one of --segment, --triangle, --sphere or --ball");
+        bail!("no query shape: give one of --segment, --triangle, --sphere or --ball (see `cga query --help`)");
     };
-    let millis = start.elapsed().as_secs_f64() * 1e3;
+    if args.device == DeviceArg::Gpu && args.mode == Some(ModeArg::Bvh) {
+        device::reject_unsupported(&["--mode bvh"])?;
+    }
+    let gpu = device::open(args.device)?;
+    let mode = args.mode.unwrap_or(if gpu.is_some() {
+        ModeArg::Brute
+    } else {
+        ModeArg::Bvh
+    });
+    let what = shape.name();
+    let (hits, millis, stats) = match &gpu {
+        None => {
+            let collider = Collider::new(mesh);
+            let start = Instant::now();
+            let hits = shape.cpu_hits(&collider, mode.into());
+            (hits, start.elapsed(), None)
+        }
+        Some(gpu) => {
+            let start = Instant::now();
+            let answers = gpu.hits(&shape, &mesh)?;
+            (
+                answers.hits,
+                start.elapsed(),
+                Some((answers.tested, answers.flagged)),
+            )
+        }
+    };
+    let millis = millis.as_secs_f64() * 1e3;
+    let device_name = device::name(gpu.as_ref());
+    let mode_name = match mode {
+        ModeArg::Brute => "brute",
+        ModeArg::Bvh => "bvh",
+    };
     if args.json {
         let value = json!({
             "query": what,
             "hits": hits.len(),
             "triangles": hits,
+            "mode": mode_name,
+            "device": device_name,
+            "tested": stats.map(|s| s.0),
+            "flagged": stats.map(|s| s.1),
             "millis": millis,
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
         println!(
-            "{what} meets {} triangles of {} ({millis:.3} ms)",
+            "{what} meets {} triangles of {} ({millis:.3} ms, mode {mode_name}, device {device_name})",
             hits.len(),
             args.mesh
         );
+        if let Some((tested, flagged)) = stats {
+            println!("{tested} triangles tested on the device, {flagged} flagged and re-decided exactly on the CPU");
+        }
         let shown: Vec<String> = hits.iter().take(20).map(u32::to_string).collect();
         if !shown.is_empty() {
             let more = if hits.len() > 20 { " ..." } else { "" };

@@ -11,7 +11,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use cga_collide::nalgebra::Isometry3;
-use cga_collide::query::{Collider, PosePair};
+use cga_collide::query::{BatchError, Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
 use serde_json::json;
 
@@ -27,8 +27,9 @@ pub struct Options<'a> {
     pub json: bool,
 }
 
-/// Parses the poses file: one pose per non-empty, non-comment line.
-pub fn parse(text: &str, name: &str) -> Result<Vec<Isometry3<f64>>> {
+/// Parses the poses file: one pose per non-empty, non-comment line, with its 1-based line
+/// number.
+pub fn parse(text: &str, name: &str) -> Result<Vec<(usize, Isometry3<f64>)>> {
     let mut poses = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let line = line.split('#').next().unwrap_or("").trim();
@@ -56,13 +57,15 @@ pub fn parse(text: &str, name: &str) -> Result<Vec<Isometry3<f64>>> {
             }
             *o = x;
         }
-        poses.push(crate::placement(
-            Some([v[0], v[1], v[2]]),
-            Some([v[3], v[4], v[5]]),
+        poses.push((
+            n + 1,
+            crate::placement(Some([v[0], v[1], v[2]]), Some([v[3], v[4], v[5]])),
         ));
     }
     if poses.is_empty() {
-        bail!("{name}: no poses");
+        bail!(
+            "{name}: no poses: write one pose `ax ay az tx ty tz` per line (`#` starts a comment)"
+        );
     }
     Ok(poses)
 }
@@ -71,13 +74,17 @@ pub fn parse(text: &str, name: &str) -> Result<Vec<Isometry3<f64>>> {
 pub fn run(a: TriMesh, b: TriMesh, options: &Options<'_>) -> Result<()> {
     let name = options.file.display().to_string();
     let text = std::fs::read_to_string(options.file)
-        .with_context(|| format!("cannot read poses file {name}"))?;
-    let poses: Vec<PosePair> = parse(&text, &name)?
+        .with_context(|| format!("--poses: cannot read the poses file {name} (check the path)"))?;
+    let parsed = parse(&text, &name)?;
+    let lines: Vec<usize> = parsed.iter().map(|&(line, _)| line).collect();
+    let poses: Vec<PosePair> = parsed
         .into_iter()
-        .map(|p| PosePair::new(Isometry3::identity(), p))
+        .map(|(_, p)| PosePair::new(Isometry3::identity(), p))
         .collect();
+    // A pose without an answer is reported at its line of the file.
+    let at_line = |e: BatchError| anyhow::anyhow!("{name}:{}: {}", lines[e.index], e.source);
     if options.threads == Some(0) {
-        bail!("--threads must be at least 1");
+        bail!("--threads 0: give at least 1, or leave --threads out to use every core");
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.threads.unwrap_or(0))
@@ -87,13 +94,19 @@ pub fn run(a: TriMesh, b: TriMesh, options: &Options<'_>) -> Result<()> {
     let (ca, cb) = pool.install(|| rayon::join(|| Collider::new(a), || Collider::new(b)));
     let start = Instant::now();
     let (collides, pairs): (Vec<bool>, Option<Vec<usize>>) = if options.all_pairs {
-        let pairs = pool.install(|| ca.intersecting_pairs_batch(&cb, &poses))?;
+        let pairs = pool
+            .install(|| ca.intersecting_pairs_batch(&cb, &poses))
+            .map_err(at_line)?;
         (
             pairs.iter().map(|p| !p.is_empty()).collect(),
             Some(pairs.iter().map(Vec::len).collect()),
         )
     } else {
-        (pool.install(|| ca.collides_batch(&cb, &poses))?, None)
+        (
+            pool.install(|| ca.collides_batch(&cb, &poses))
+                .map_err(at_line)?,
+            None,
+        )
     };
     let micros = start.elapsed().as_secs_f64() * 1e6 / poses.len() as f64;
     if options.json {
@@ -134,10 +147,16 @@ mod tests {
         )
         .unwrap();
         assert_eq!(poses.len(), 2);
-        assert_eq!(poses[0], crate::placement(None, Some([0.3, 0.05, 0.0])));
+        assert_eq!(
+            poses[0],
+            (2, crate::placement(None, Some([0.3, 0.05, 0.0])))
+        );
         assert_eq!(
             poses[1],
-            crate::placement(Some([90.0, 0.0, 0.0]), Some([1.0, 2.0, 3.0]))
+            (
+                4,
+                crate::placement(Some([90.0, 0.0, 0.0]), Some([1.0, 2.0, 3.0]))
+            )
         );
         let e = parse("1 2 3\n", "f").unwrap_err().to_string();
         assert!(e.contains("f:1") && e.contains("6 numbers"), "{e}");

@@ -187,10 +187,21 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         }
         r.trees
     } else {
-        format::read(&text).with_context(|| format!("in `{name}`"))?
+        format::read(&text).map_err(|e| {
+            let hint = match e {
+                format::FormatError::UnexpectedEnd { .. } => {
+                    " (the file ends early: --lenient uses the trees that are complete)"
+                }
+                _ => "",
+            };
+            anyhow::Error::new(e).context(format!("in `{name}`{hint}"))
+        })?
     };
     if trees.len() < 2 {
-        bail!("`{name}` holds {} tree(s); collide needs two", trees.len());
+        bail!(
+            "`{name}` holds {} tree(s); collide needs two: write a pair with `cga spheretree build A B -o FILE`",
+            trees.len()
+        );
     }
     let (x, y) = (&trees[0], &trees[1]);
     let nodes = [x.len(), y.len()];

@@ -1,29 +1,8 @@
 //! The `cga` command line: JSON fields, pairs file, image, modes agreeing, typed errors.
 
-use std::process::Command;
+mod common;
 
-fn cga(args: &[&str], dir: &std::path::Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_cga"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the cga binary runs")
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cga-cli-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON on stdout")
-}
+use common::{cga, json, temp_dir};
 
 #[test]
 fn collide_modes_agree_and_write_pairs_and_image() {
@@ -374,4 +353,134 @@ fn a_missing_file_is_named_once_with_its_reason_and_a_remedy() {
     assert_eq!(err.matches("no-such-mesh.off").count(), 1, "{err}");
     assert_eq!(err.matches("os error").count(), 1, "{err}");
     assert!(err.contains("check the path"), "{err}");
+}
+
+#[cfg(not(feature = "gpu"))]
+#[test]
+fn device_gpu_without_the_feature_says_how_to_get_it() {
+    let dir = temp_dir("no-gpu-feature");
+    let err = common::error(&cga(
+        &[
+            "query",
+            "bunny",
+            "--segment",
+            "0,0,0,1,1,1",
+            "--device",
+            "gpu",
+        ],
+        &dir,
+    ));
+    assert!(err.contains("without GPU support"), "{err}");
+    assert!(err.contains("--features gpu"), "{err}");
+    assert!(err.contains("--device cpu"), "{err}");
+}
+
+/// Each error names what was wrong, where (file and line, or the argument) and what to do.
+#[test]
+fn errors_say_what_where_and_what_to_do() {
+    use common::error;
+    let dir = temp_dir("messages");
+    let says = |args: &[&str], parts: &[&str]| {
+        let err = error(&cga(args, &dir));
+        for part in parts {
+            assert!(err.contains(part), "{args:?}: {part:?} missing from: {err}");
+        }
+    };
+    std::fs::write(
+        dir.join("nan.off"),
+        "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",
+    )
+    .unwrap();
+    says(
+        &["collide", "nan.off", "bunny"],
+        &["nan.off:4", "vertex 1", "must be a finite number"],
+    );
+    std::fs::write(dir.join("empty.off"), "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").unwrap();
+    says(
+        &["query", "empty.off", "--segment", "0,0,0,1,1,1"],
+        &["empty.off", "no triangles", "check that the file has faces"],
+    );
+    says(
+        &["collide", "bunnny", "bunny"],
+        &[
+            "bunnny: no such file",
+            "not a built-in mesh (bunny, bunny00, armadillo)",
+            "check the name",
+        ],
+    );
+    says(
+        &["collide", "bunny"],
+        &["only one mesh given (`bunny`)", "give two meshes"],
+    );
+    says(
+        &["collide", "bunny", "bunny", "--repeat", "0"],
+        &["--repeat 0", "at least 1"],
+    );
+    says(
+        &["collide", "bunny", "bunny", "--clearance", "-1"],
+        &["--clearance -1", "finite distance >= 0"],
+    );
+    says(
+        &["collide", "bunny", "bunny", "--translate", "1,2"],
+        &["--translate", "expected 3 comma-separated numbers, got 2"],
+    );
+    says(
+        &["query", "bunny"],
+        &[
+            "no query shape",
+            "--segment, --triangle, --sphere or --ball",
+        ],
+    );
+    says(
+        &["query", "bunny", "--ball", "0,0,0,-2"],
+        &["--ball", "radius is negative", "finite radius >= 0"],
+    );
+    says(
+        &["query", "bunny", "--segment", "0,0,0,1,1,inf"],
+        &["--segment", "`inf` is not finite"],
+    );
+    // A pose that the certified query cannot take, reported at its line of the file.
+    std::fs::write(
+        dir.join("poses.txt"),
+        "# rotation, translation\n0 0 0 0 0 0\n\n0 0 0 1e300 0 0\n",
+    )
+    .unwrap();
+    says(
+        &["collide", "bunny", "bunny", "--poses", "poses.txt"],
+        &[
+            "poses.txt:4",
+            "too large",
+            "scale the meshes and translations down",
+        ],
+    );
+    std::fs::write(dir.join("none.txt"), "# nothing\n").unwrap();
+    says(
+        &["collide", "bunny", "bunny", "--poses", "none.txt"],
+        &[
+            "none.txt: no poses",
+            "one pose `ax ay az tx ty tz` per line",
+        ],
+    );
+    says(
+        &[
+            "collide",
+            "bunny",
+            "bunny",
+            "--poses",
+            "absent.txt",
+            "--threads",
+            "2",
+        ],
+        &["--poses", "absent.txt", "check the path"],
+    );
+    // A truncated sphere-tree file: its line, and the option that reads what is there.
+    std::fs::write(dir.join("cut.txt"), "2\n0 0 0 1 0\n0 8\n").unwrap();
+    says(
+        &["spheretree", "collide", "cut.txt"],
+        &["cut.txt", "input ends after line 3", "--lenient"],
+    );
+    says(
+        &["experiment", "double-spheres", "--collide", "1.5"],
+        &["--collide 1.5", "strictly between 0 and 1"],
+    );
 }

@@ -1,30 +1,9 @@
 //! `cga distance`, `cga self-intersect`, and `cga collide --clearance/--contacts` with the
 //! contact class.
 
-use std::process::Command;
+mod common;
 
-fn cga(args: &[&str], dir: &std::path::Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_cga"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the cga binary runs")
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cga-cli-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON on stdout")
-}
+use common::{cga, json, temp_dir};
 
 /// A unit cube as an OFF file.
 fn cube(dir: &std::path::Path) -> String {

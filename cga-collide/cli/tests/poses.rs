@@ -1,30 +1,9 @@
 //! `cga collide A B --poses FILE`: one answer per pose, equal to placing B with `--rotate` and
 //! `--translate`; typed errors for bad files.
 
-use std::process::Command;
+mod common;
 
-fn cga(args: &[&str], dir: &std::path::Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_cga"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the cga binary runs")
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("cga-cli-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON on stdout")
-}
+use common::{cga, json, temp_dir};
 
 const POSES: [([&str; 3], [&str; 3]); 3] = [
     (["0", "40", "10"], ["0.2", "0.05", "-0.1"]),

@@ -84,17 +84,17 @@ use crate::{Ball, Intersects, Segment, Sphere, Triangle};
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 pub enum PoseError {
     /// A quaternion or translation component of the pose is NaN or infinite.
-    #[error("the pose has a non-finite component")]
+    #[error("the pose has a non-finite component: every quaternion and translation component must be a finite number")]
     NonFinite,
     /// The pose's quaternion is far from unit length (`|q|²` outside `[1/2, 2]`).
-    #[error("the pose's rotation is not a unit quaternion (|q|² = {norm_squared})")]
+    #[error("the pose's rotation is not a unit quaternion (|q|² = {norm_squared}): normalise it (e.g. UnitQuaternion::new_normalize)")]
     NotUnit {
         /// The squared length of the quaternion.
         norm_squared: f64,
     },
     /// Coordinates or translations so large that the rounding bounds could overflow
     /// (`|coordinate| ≥ 2^990`).
-    #[error("coordinates too large for a certified pose query (|x| up to {magnitude:e})")]
+    #[error("coordinates too large for a certified pose query (|x| up to {magnitude:e}, the limit is 2^990): scale the meshes and translations down")]
     OutOfRange {
         /// The largest magnitude involved.
         magnitude: f64,

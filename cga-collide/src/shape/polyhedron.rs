@@ -45,7 +45,9 @@ pub enum PolyhedronError {
         faces: usize,
     },
     /// A vertex coordinate is NaN or infinite.
-    #[error("vertex {vertex} has a non-finite coordinate ({value})")]
+    #[error(
+        "vertex {vertex} has a non-finite coordinate ({value}); coordinates must be finite numbers"
+    )]
     NonFinite {
         /// Index of the vertex.
         vertex: usize,
@@ -61,7 +63,7 @@ pub enum PolyhedronError {
         reason: &'static str,
     },
     /// A face refers to a vertex that does not exist.
-    #[error("face {face} refers to vertex {index}, but there are only {vertex_count} vertices")]
+    #[error("face {face} refers to vertex {index}, but there are only {vertex_count} vertices (indices are 0-based)")]
     IndexOutOfRange {
         /// Index of the face.
         face: usize,
@@ -71,7 +73,7 @@ pub enum PolyhedronError {
         vertex_count: usize,
     },
     /// A vertex is used by no face.
-    #[error("vertex {vertex} belongs to no face")]
+    #[error("vertex {vertex} belongs to no face; remove it or add the faces that use it")]
     UnusedVertex {
         /// Index of the vertex.
         vertex: usize,
@@ -90,7 +92,7 @@ pub enum PolyhedronError {
         reason: &'static str,
     },
     /// `V - E + F != 2`.
-    #[error("Euler characteristic V - E + F = {vertices} - {edges} + {faces} is not 2")]
+    #[error("Euler characteristic V - E + F = {vertices} - {edges} + {faces} is not 2: a convex polyhedron is a closed surface without holes or handles")]
     Euler {
         /// Vertices.
         vertices: usize,

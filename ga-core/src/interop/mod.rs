@@ -28,7 +28,7 @@ pub mod mint;
 pub enum InteropError {
     /// A conformal rotor or motor has parts other than a rotation (translation, dilation,
     /// transversion), so it is not a quaternion.
-    #[error("the rotor is not a rotation about the origin: its {blade} coefficient is {value}")]
+    #[error("the rotor is not a rotation about the origin: its {blade} coefficient is {value}; only a pure rotation converts to a quaternion (convert a motor to an affine transform instead)")]
     NotARotation {
         /// The first offending blade.
         blade: &'static str,
@@ -37,11 +37,11 @@ pub enum InteropError {
     },
     /// The versor does not map points to points rigidly (it dilates, inverts, or is not a
     /// versor), or its coefficients are not finite.
-    #[error("not a rigid motion: {0}")]
+    #[error("not a rigid motion: {0}; only rotations and translations convert (remove dilations, inversions and reflections first)")]
     NotRigid(&'static str),
     /// The affine map's linear part is not a rotation (orthonormal with determinant +1, up to
     /// a relative error of 1e-9).
-    #[error("the linear part is not a rotation (largest deviation of MᵀM from I: {deviation:e}, determinant {determinant})")]
+    #[error("the linear part is not a rotation (largest deviation of MᵀM from I: {deviation:e}, determinant {determinant}); remove scaling, shear and reflection, or orthonormalise the matrix")]
     NotARotationMatrix {
         /// `max |MᵀM - I|`.
         deviation: f64,

@@ -50,10 +50,10 @@ use crate::scalar::{Rational, Ring as RingTrait};
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum SymbolicError {
     /// A variable of the polynomial has no value in the bindings given to an evaluation.
-    #[error("variable `{0}` has no value in the bindings")]
+    #[error("variable `{0}` has no value in the bindings; add (\"{0}\", value) to the values passed to the evaluation")]
     Unbound(String),
     /// Evaluation produced a non-finite `f64` (overflow).
-    #[error("evaluation overflowed to a non-finite f64")]
+    #[error("evaluation overflowed to a non-finite f64; scale the values down, or evaluate exactly with eval_rational")]
     NonFinite,
     /// Text that is not a polynomial (or multivector) expression.
     #[error("parse error at byte {position} of `{input}`: {message}")]

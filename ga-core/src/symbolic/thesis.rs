@@ -991,7 +991,7 @@ pub enum FixtureError {
         message: String,
     },
     /// `uses` names an entry that does not exist.
-    #[error("entry {entry} uses unknown entry {missing}")]
+    #[error("entry {entry} uses unknown entry {missing}; define an entry `[{missing}]` in the fixture or fix the `uses` field")]
     UnknownEntry {
         /// The entry with the `uses` field.
         entry: String,

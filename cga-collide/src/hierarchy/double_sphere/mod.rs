@@ -124,7 +124,7 @@ pub enum InnerSphereKind {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DoubleSphereError {
     /// The level is larger than [`MAX_LEVEL`].
-    #[error("level {level} is too deep (at most {max})")]
+    #[error("level {level} is too deep: choose a level from 0 to {max}")]
     LevelTooDeep {
         /// The requested level.
         level: usize,

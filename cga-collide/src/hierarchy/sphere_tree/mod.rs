@@ -160,7 +160,7 @@ pub enum TreeError {
         count: usize,
     },
     /// More nodes than 32-bit indices address.
-    #[error("{count} nodes is more than a sphere tree holds (2^32 - 1)")]
+    #[error("{count} nodes is more than a sphere tree holds (2^32 - 1): build a shallower tree")]
     TooLarge {
         /// The number of nodes.
         count: usize,

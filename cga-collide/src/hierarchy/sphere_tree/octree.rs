@@ -85,17 +85,19 @@ impl BuildOptions {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum BuildError {
     /// The depth is above [`MAX_DEPTH`].
-    #[error("depth {depth} is above the maximum {MAX_DEPTH}")]
+    #[error(
+        "depth {depth} is above the maximum {MAX_DEPTH}: choose a depth from 0 to {MAX_DEPTH}"
+    )]
     DepthTooLarge {
         /// The requested depth.
         depth: u32,
     },
     /// The mesh is not closed, so "inside" is not defined.
-    #[error("the mesh is not closed (some edge is used by an odd number of triangles); full and empty cells cannot be told apart")]
+    #[error("the mesh is not closed (some edge is used by an odd number of triangles); full and empty cells cannot be told apart: close its holes, or use a closed (watertight) mesh")]
     NotClosed,
     /// The exact grid cannot be represented in `f64` (the mesh is tiny compared to its
     /// distance from the origin, or its coordinates are extreme).
-    #[error("the octree grid of depth {depth} cannot be represented exactly in f64 for a mesh of size {extent} at distance {offset} from the origin")]
+    #[error("the octree grid of depth {depth} cannot be represented exactly in f64 for a mesh of size {extent} at distance {offset} from the origin: move the mesh near the origin (e.g. scale it into the unit box) or choose a smaller depth")]
     Precision {
         /// The requested depth.
         depth: u32,

@@ -109,7 +109,7 @@ pub enum MeshError {
         message: String,
     },
     /// A face refers to a vertex that does not exist.
-    #[error("{at}: face {face}: vertex index {index} out of range (the mesh has {vertex_count} vertices)")]
+    #[error("{at}: face {face}: vertex index {index} out of range (the mesh has {vertex_count} vertices; check the face's indices and the vertex count in the header)")]
     IndexOutOfRange {
         /// Where.
         at: Location,
@@ -121,7 +121,7 @@ pub enum MeshError {
         vertex_count: usize,
     },
     /// A vertex coordinate is infinite or NaN.
-    #[error("{at}: vertex {vertex}: non-finite coordinate {value}")]
+    #[error("{at}: vertex {vertex}: non-finite coordinate {value} (every coordinate must be a finite number)")]
     NonFinite {
         /// Where.
         at: Location,
@@ -131,7 +131,7 @@ pub enum MeshError {
         value: f64,
     },
     /// The mesh has no triangles.
-    #[error("{file}: the mesh is empty (no triangles)")]
+    #[error("{file}: the mesh is empty (no triangles): check that the file has faces, not only vertices or points")]
     Empty {
         /// The file.
         file: String,
