@@ -8,71 +8,11 @@ use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
-/// A closed axis-aligned box mesh with integer corners (12 triangles) — touching and coplanar
-/// contacts happen exactly when such boxes share faces, edges or corners.
-fn cube(lo: [i32; 3], hi: [i32; 3]) -> TriMesh {
-    TriMesh::cuboid(lo.map(f64::from).into(), hi.map(f64::from).into()).unwrap()
-}
-
-/// A flat grid of `n × n` unit squares in the plane z = `z`, two triangles each.
-fn grid(n: u32, z: f64) -> TriMesh {
-    let mut v = Vec::new();
-    for y in 0..=n {
-        for x in 0..=n {
-            v.push(Point3::new(x as f64, y as f64, z));
-        }
-    }
-    let mut t = Vec::new();
-    for y in 0..n {
-        for x in 0..n {
-            let i = y * (n + 1) + x;
-            t.push([i, i + 1, i + n + 2]);
-            t.push([i, i + n + 2, i + n + 1]);
-        }
-    }
-    TriMesh::new(v, t).unwrap()
-}
+mod common;
+use common::{cube, grid, iso};
 
 fn random_soup(seed: u64, n: usize) -> TriMesh {
-    let mut rng = cga_collide::testing::adversarial::SplitMix64(seed);
-    let mut v = Vec::new();
-    let mut t = Vec::new();
-    for k in 0..n {
-        let c = Point3::new(
-            rng.float(-2.0, 2.0),
-            rng.float(-2.0, 2.0),
-            rng.float(-2.0, 2.0),
-        );
-        for _ in 0..3 {
-            let d = Vector3::new(
-                rng.float(-0.4, 0.4),
-                rng.float(-0.4, 0.4),
-                rng.float(-0.4, 0.4),
-            );
-            v.push(c + d);
-        }
-        let b = 3 * k as u32;
-        // every 7th triangle degenerate (a repeated corner)
-        t.push(if k % 7 == 0 {
-            [b, b + 1, b + 1]
-        } else {
-            [b, b + 1, b + 2]
-        });
-    }
-    TriMesh::new(v, t).unwrap()
-}
-
-fn iso() -> impl Strategy<Value = Isometry3<f64>> {
-    (
-        (-1.5f64..1.5, -1.5f64..1.5, -1.5f64..1.5),
-        (-3.2f64..3.2, -3.2f64..3.2, -3.2f64..3.2),
-    )
-        .prop_map(|((x, y, z), (a, b, c))| {
-            Isometry3::from_parts(
-                Translation3::new(x, y, z),
-                UnitQuaternion::from_euler_angles(a, b, c),
-            )
-        })
+    common::random_soup(seed, n, 2.0)
 }
 
 /// Pure exact oracle: every triangle, no box filter at all.

@@ -8,70 +8,16 @@ use cga_collide::{Ball, Segment, Sphere, Triangle};
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
-fn cube(lo: [i32; 3], hi: [i32; 3]) -> TriMesh {
-    TriMesh::cuboid(lo.map(f64::from).into(), hi.map(f64::from).into()).unwrap()
-}
+mod common;
+use common::{cube, iso};
 
 /// `n × n` unit squares in the plane z = 0, two triangles each.
 fn grid(n: u32) -> TriMesh {
-    let mut v = Vec::new();
-    for y in 0..=n {
-        for x in 0..=n {
-            v.push(Point3::new(x as f64, y as f64, 0.0));
-        }
-    }
-    let mut t = Vec::new();
-    for y in 0..n {
-        for x in 0..n {
-            let i = y * (n + 1) + x;
-            t.push([i, i + 1, i + n + 2]);
-            t.push([i, i + n + 2, i + n + 1]);
-        }
-    }
-    TriMesh::new(v, t).unwrap()
+    common::grid(n, 0.0)
 }
 
 fn random_soup(seed: u64, n: usize) -> TriMesh {
-    let mut rng = cga_collide::testing::adversarial::SplitMix64(seed);
-    let mut v = Vec::new();
-    let mut t = Vec::new();
-    for k in 0..n {
-        let c = Point3::new(
-            rng.float(-1.5, 1.5),
-            rng.float(-1.5, 1.5),
-            rng.float(-1.5, 1.5),
-        );
-        for _ in 0..3 {
-            v.push(
-                c + Vector3::new(
-                    rng.float(-0.4, 0.4),
-                    rng.float(-0.4, 0.4),
-                    rng.float(-0.4, 0.4),
-                ),
-            );
-        }
-        let b = 3 * k as u32;
-        // every 7th triangle degenerate (a repeated corner)
-        t.push(if k % 7 == 0 {
-            [b, b + 1, b + 1]
-        } else {
-            [b, b + 1, b + 2]
-        });
-    }
-    TriMesh::new(v, t).unwrap()
-}
-
-fn iso() -> impl Strategy<Value = Isometry3<f64>> {
-    (
-        prop::array::uniform3(-1.5f64..1.5),
-        prop::array::uniform3(-3.2f64..3.2),
-    )
-        .prop_map(|(t, r)| {
-            Isometry3::from_parts(
-                Translation3::new(t[0], t[1], t[2]),
-                UnitQuaternion::from_euler_angles(r[0], r[1], r[2]),
-            )
-        })
+    common::random_soup(seed, n, 1.5)
 }
 
 /// Rotations that are exact in `f64` (identity and half turns: quaternion components 0, ±1)

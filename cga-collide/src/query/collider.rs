@@ -26,6 +26,7 @@ use std::ops::ControlFlow;
 use crate::parallel::*;
 use nalgebra::{Isometry3, Point3};
 
+use crate::query::pose_tree::PoseTree;
 use crate::query::ray_crosses_triangle;
 
 use crate::bvh::{triangle_box, Aabb, BuildStrategy, Bvh};
@@ -51,6 +52,8 @@ pub struct Collider {
     boxes32: Vec<[f32; 6]>,
     /// Largest `|coordinate|` of a vertex (the scale of the rounding bounds of pose queries).
     extent: f64,
+    /// The hierarchy laid out for pose queries (centre/extent nodes, vertices in leaf order).
+    pose_tree: PoseTree,
 }
 
 /// Largest absolute vertex coordinate.
@@ -154,11 +157,13 @@ impl Collider {
         let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
         let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
+        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i));
         Collider {
             mesh,
             bvh,
             boxes32,
             extent,
+            pose_tree,
         }
     }
 
@@ -171,17 +176,24 @@ impl Collider {
         bvh.refit(mesh.vertices(), mesh.triangles());
         let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
+        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i));
         Ok(Collider {
             mesh,
             bvh,
             boxes32,
             extent,
+            pose_tree,
         })
     }
 
     /// Largest absolute coordinate of a vertex.
     pub(crate) fn extent(&self) -> f64 {
         self.extent
+    }
+
+    /// The hierarchy laid out for pose queries.
+    pub(crate) fn pose_tree(&self) -> &PoseTree {
+        &self.pose_tree
     }
 
     /// The mesh, in world coordinates.

@@ -36,6 +36,8 @@ pub use clearance::{
     within_distance_sphere_sphere, within_distance_triangle_ball, within_distance_triangle_sphere,
     within_distance_triangle_triangle, WithinDistance,
 };
+mod placed_leaves;
+mod pose_tree;
 pub mod posed;
 
 pub use batch::{BatchError, PosePair};

@@ -4,15 +4,22 @@
 //!
 //! # How
 //! * Mesh against mesh: the two hierarchies are descended together under the relative motion.
-//!   A box of B is carried into A's frame by a rounded relative transform, and the box test is
-//!   widened by a margin that bounds every rounding on the way (below), so no pair of
-//!   triangles that meets after placing is ever pruned.
+//!   Each node is read as a centre and half-extents (`pose_tree`: one 64-byte cache line per
+//!   node). B's box is carried into A's frame by a rounded relative transform and tested on
+//!   A's three axes, then A's box into B's frame on B's three axes (the six face axes of the
+//!   separating-axis test of two oriented boxes); each test is widened by a margin that bounds
+//!   every rounding on the way (below), so no pair of triangles that meets after placing is
+//!   ever pruned.
 //! * Mesh against a shape: each box of the hierarchy is carried into the world by the pose,
 //!   widened the same way, and tested against the shape.
 //! * At the leaves, only the candidate triangles are transformed, with **the very expression
 //!   `pose * v` that [`TriMesh::transformed`](crate::TriMesh::transformed) uses**, so they are
 //!   bit-identical to the placed mesh's triangles; the placed query's exact box filter and exact
-//!   test then decide, on the same numbers.
+//!   test then decide, on the same numbers. The vertices are read from a copy in leaf order
+//!   (contiguous), and each leaf is placed at most once per traversal, in scratch memory each
+//!   thread keeps from one query to the next (no allocation per pose once it has grown; 8 bytes
+//!   per node of the largest trees the thread has met, and 128 per triangle placed in its
+//!   largest traversal).
 //!
 //! # The rounding bound
 //! nalgebra evaluates `pose * v` for the unit quaternion `q = (w, u)` and translation `τ` as
@@ -34,8 +41,13 @@
 //!   `D x - D τ_A ∈ box_A ⊕ r_A` and `D x - D τ_A ∈ R̂ box_B + t̂ ⊕ r_B`, where
 //!   `R̂ = fl(D M̂_B)`, `t̂ = fl(D fl(τ_B - τ_A))` and the radii collect `|D M_A - I|`,
 //!   `|D M_B - R̂|` (matrix-product rounding `4u|D||M̂|` plus `|D| |M - M̂|`), `|D| δ` and the
-//!   rounding of `t̂`. The test `box_A` against the box of `R̂ box_B + t̂`, widened by
-//!   `r_A + r_B` plus `16u` times the magnitudes involved, is therefore conservative.
+//!   rounding of `t̂`. With the boxes as `[c - e, c + e]` (real boxes holding the nodes' exact
+//!   boxes, `|c| ≤ ρ`, `e ≤ 2ρ(1 + 10u) + 2⁻¹⁰⁰⁰`), such a point exists only if on each axis
+//!   `i` of A, `|(R̂ c_B + t̂ - c_A)ᵢ| ≤ Σⱼ |R̂ᵢⱼ| e_Bⱼ + e_Aᵢ + r_A + r_B`. The code evaluates
+//!   both sides in `f64` and adds `16u (9 max|R̂ᵢⱼ| ρ_B + |t̂|∞ + 3ρ_A + r_A + r_B)`, more
+//!   than the rounding of either side (each a sum of at most five terms of those magnitudes),
+//!   so the test in `f64` rejects a pair only when the real inequality fails: it is
+//!   conservative. The same holds with the roles of A and B exchanged.
 //!
 //! Poses whose quaternion is far from unit (`|q|²` outside `[1/2, 2]`), non-finite poses, and
 //! meshes or translations so large that the bounds could overflow (`|coordinate| ≥ 2⁹⁹⁰`) get a
@@ -61,8 +73,10 @@ use std::ops::ControlFlow;
 use nalgebra::{Isometry3, Point3};
 use thiserror::Error;
 
-use crate::bvh::{Aabb, Bvh, MAX_LEAF};
+use crate::bvh::{Aabb, Bvh};
 use crate::parallel::*;
+use crate::query::placed_leaves::{place, with_scratch, Placed, Scratch};
+use crate::query::pose_tree::PoseNode;
 use crate::query::{ray_crosses_triangle, Collider};
 use crate::{Ball, Intersects, Segment, Sphere, Triangle};
 
@@ -233,6 +247,8 @@ impl WorldBoxes {
 #[derive(Debug, Clone, Copy)]
 struct Relative {
     r: Mat,
+    /// `|r|` entrywise.
+    abs_r: Mat,
     t: [f64; 3],
     margin: f64,
 }
@@ -291,100 +307,33 @@ impl Relative {
             + 3.0 * eta_b * rho_b
             + dsum * pb.delta(rho_b)
             + e_t;
-        let margin = radius + 16.0 * U * (3.0 * rmax * rho_b + tmax + rho_a + radius) + TINY;
+        // Node boxes are centres `|c| ≤ ρ` and half-extents `e ≤ 2ρ(1 + 10u) + 2⁻¹⁰⁰⁰`
+        // (`pose_tree`): `16u` times these magnitudes pays for the rounding of the test.
+        let margin = radius + 16.0 * U * (9.0 * rmax * rho_b + tmax + 3.0 * rho_a + radius) + TINY;
         Relative {
             r,
+            abs_r: r.map(|row| row.map(f64::abs)),
             t,
             margin: margin * (1.0 + 8.0 * U),
         }
     }
 
-    /// `false` only if no placed triangle under `a` (local box of A) meets a placed triangle
-    /// under `b` (local box of B).
-    #[inline]
-    fn may_overlap(&self, a: &Aabb, b: &Aabb) -> bool {
+    /// `false` only if no placed triangle under node `a` of A meets a placed triangle under
+    /// node `b` of B: `b`'s box carried into A's frame, against `a`'s box on A's three axes
+    /// (`|r c_b + t - c_a| > |r| e_b + e_a + margin` on an axis separates them).
+    #[inline(always)]
+    fn may_overlap(&self, a: &PoseNode, b: &PoseNode) -> bool {
+        let (r, ar) = (&self.r, &self.abs_r);
+        let mut apart = false;
         for i in 0..3 {
-            let (lo, hi) = row_range(&self.r[i], self.t[i], b);
-            if lo - self.margin > a.max[i] || hi + self.margin < a.min[i] {
-                return false;
-            }
+            let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
+            let reach =
+                ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2] + a.e[i] + self.margin;
+            apart |= d.abs() > reach;
         }
-        true
+        !apart
     }
 }
-
-/// A triangle of a leaf, placed exactly as [`Collider::placed`] places it, with its box.
-#[derive(Debug, Clone, Copy)]
-struct Placed {
-    index: u32,
-    tri: Triangle,
-    bounds: Aabb,
-}
-
-/// The placed triangles of leaf `node` (at most [`MAX_LEAF`]).
-#[inline]
-fn place_leaf(c: &Collider, node: usize, iso: &Isometry3<f64>, out: &mut [Option<Placed>; 4]) {
-    let n = &c.bvh().nodes()[node];
-    let s = n.start as usize;
-    let order = c.bvh().order();
-    for (k, slot) in out.iter_mut().enumerate() {
-        *slot = (k < n.count as usize).then(|| place(c, order[s + k], iso));
-    }
-}
-
-#[inline]
-fn place(c: &Collider, index: u32, iso: &Isometry3<f64>) -> Placed {
-    let [a, b, d] = c.mesh().triangle(index as usize);
-    // The expression of `TriMesh::transformed`, hence bit-identical coordinates.
-    let (a, b, d) = (iso * a, iso * b, iso * d);
-    let bounds = Aabb::of_points(&[a, b, d]);
-    // The range check of every pose query keeps the coordinates finite (no overflow).
-    let tri = Triangle::new(a, b, d)
-        .unwrap_or_else(|_| unreachable!("range-checked pose gives finite coordinates"));
-    Placed { index, tri, bounds }
-}
-
-/// Hashes a node index (one multiplication; the keys are small distinct integers).
-#[derive(Default)]
-struct NodeHasher(u64);
-
-impl std::hash::Hasher for NodeHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 << 8 | u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        }
-    }
-    fn write_usize(&mut self, n: usize) {
-        self.0 = (n as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
-    }
-}
-
-/// The placed triangles of the leaves met so far in one traversal (work proportional to the
-/// leaves visited, not to the mesh).
-#[derive(Default)]
-struct LeafCache {
-    slot: std::collections::HashMap<usize, usize, std::hash::BuildHasherDefault<NodeHasher>>,
-    leaves: Vec<[Option<Placed>; 4]>,
-}
-
-impl LeafCache {
-    /// Index into `leaves` of leaf `node`, placing it on first use.
-    #[inline]
-    fn get(&mut self, c: &Collider, node: usize, iso: &Isometry3<f64>) -> usize {
-        let leaves = &mut self.leaves;
-        *self.slot.entry(node).or_insert_with(|| {
-            let mut l = [None; 4];
-            place_leaf(c, node, iso, &mut l);
-            leaves.push(l);
-            leaves.len() - 1
-        })
-    }
-}
-
-const _: () = assert!(MAX_LEAF <= 4, "leaf buffers hold four triangles");
 
 /// Two colliders under their poses, ready to be traversed together.
 struct PosedPair<'a> {
@@ -421,48 +370,50 @@ impl<'a> PosedPair<'a> {
         })
     }
 
-    /// `false` only if nothing placed under node box `x` of A meets anything placed under node
-    /// box `y` of B: B's box tested in A's frame, then A's box in B's frame.
-    #[inline]
-    fn may_overlap(&self, x: &Aabb, y: &Aabb) -> bool {
+    /// `false` only if nothing placed under node `x` of A meets anything placed under node
+    /// `y` of B: B's box tested in A's frame, then A's box in B's frame (the six face axes of
+    /// the separating-axis test).
+    #[inline(always)]
+    fn may_overlap(&self, x: &PoseNode, y: &PoseNode) -> bool {
         self.rel.may_overlap(x, y) && self.inv.may_overlap(y, x)
     }
 
     /// Calls `visit(i, j)` for every pair of placed triangles whose boxes overlap and which
-    /// meet (exactly), below the node pairs of `stack`; stops when `visit` breaks.
+    /// meet (exactly), below the node pairs on `scratch.stack`; stops when `visit` breaks.
     fn traverse<B>(
         &self,
-        stack: &mut Vec<(usize, usize)>,
+        scratch: &mut Scratch,
         mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
-        let (na, nb) = (self.a.bvh().nodes(), self.b.bvh().nodes());
-        // Leaves meet many leaves of the other tree: each is placed once per traversal.
-        let mut cache_a = LeafCache::default();
-        let mut cache_b = LeafCache::default();
-        while let Some((i, j)) = stack.pop() {
-            let (x, y) = (&na[i], &nb[j]);
-            if !self.may_overlap(&x.bounds, &y.bounds) {
+        let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
+        let (na, nb) = (ta.nodes(), tb.nodes());
+        while let Some((i, j)) = scratch.stack.pop() {
+            let (x, y) = (&na[i as usize], &nb[j as usize]);
+            if !self.may_overlap(x, y) {
                 continue;
             }
             match (x.is_leaf(), y.is_leaf()) {
                 (true, true) => {
-                    let la = cache_a.get(self.a, i, &self.pose_a);
-                    let lb = cache_b.get(self.b, j, &self.pose_b);
-                    for p in cache_a.leaves[la].iter().flatten() {
-                        for q in cache_b.leaves[lb].iter().flatten() {
+                    // Leaves meet many leaves of the other tree: each is placed once per
+                    // traversal.
+                    let la = scratch.leaf(0, i, x, ta, &self.pose_a);
+                    let lb = scratch.leaf(1, j, y, tb, &self.pose_b);
+                    let (pa, pb) = (scratch.placed(la), scratch.placed(lb));
+                    for p in pa {
+                        for q in pb {
                             if p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri) {
                                 visit(p.index, q.index)?;
                             }
                         }
                     }
                 }
-                (false, true) => push_children(stack, x.start as usize, j, true),
-                (true, false) => push_children(stack, i, y.start as usize, false),
+                (false, true) => push_children(&mut scratch.stack, x.start, j, true),
+                (true, false) => push_children(&mut scratch.stack, i, y.start, false),
                 (false, false) => {
-                    if x.bounds.half_area() >= y.bounds.half_area() {
-                        push_children(stack, x.start as usize, j, true);
+                    if x.size >= y.size {
+                        push_children(&mut scratch.stack, x.start, j, true);
                     } else {
-                        push_children(stack, i, y.start as usize, false);
+                        push_children(&mut scratch.stack, i, y.start, false);
                     }
                 }
             }
@@ -470,11 +421,34 @@ impl<'a> PosedPair<'a> {
         ControlFlow::Continue(())
     }
 
+    /// Runs the traversal from the node pairs `start` with this thread's scratch memory.
+    fn run<B>(
+        &self,
+        start: &[(u32, u32)],
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        let (na, nb) = (self.a.pose_tree().nodes(), self.b.pose_tree().nodes());
+        with_scratch(na.len(), nb.len(), |scratch| {
+            scratch.stack.extend_from_slice(start);
+            self.traverse(scratch, visit)
+        })
+    }
+
+    /// Every intersecting pair below the node pairs `start`, unsorted.
+    fn collect_pairs(&self, start: &[(u32, u32)]) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        let _ = self.run::<()>(start, |i, j| {
+            out.push((i, j));
+            ControlFlow::Continue(())
+        });
+        out
+    }
+
     /// Node pairs covering the whole traversal, at least `want` of them when the trees allow
     /// (breadth-first split of the root pair), for spreading over the cores.
-    fn split(&self, want: usize) -> Vec<(usize, usize)> {
-        let (na, nb) = (self.a.bvh().nodes(), self.b.bvh().nodes());
-        let mut level = vec![(0usize, 0usize)];
+    fn split(&self, want: usize) -> Vec<(u32, u32)> {
+        let (na, nb) = (self.a.pose_tree().nodes(), self.b.pose_tree().nodes());
+        let mut level = vec![(0u32, 0u32)];
         for _ in 0..64 {
             if level.len() >= want {
                 break;
@@ -482,8 +456,8 @@ impl<'a> PosedPair<'a> {
             let mut next = Vec::with_capacity(level.len() * 2);
             let mut grew = false;
             for &(i, j) in &level {
-                let (x, y) = (&na[i], &nb[j]);
-                if !self.may_overlap(&x.bounds, &y.bounds) {
+                let (x, y) = (&na[i as usize], &nb[j as usize]);
+                if !self.may_overlap(x, y) {
                     continue;
                 }
                 let split_a = match (x.is_leaf(), y.is_leaf()) {
@@ -493,14 +467,14 @@ impl<'a> PosedPair<'a> {
                     }
                     (false, true) => true,
                     (true, false) => false,
-                    (false, false) => x.bounds.half_area() >= y.bounds.half_area(),
+                    (false, false) => x.size >= y.size,
                 };
                 grew = true;
                 if split_a {
-                    let s = x.start as usize;
+                    let s = x.start;
                     next.extend([(s, j), (s + 1, j)]);
                 } else {
-                    let s = y.start as usize;
+                    let s = y.start;
                     next.extend([(i, s), (i, s + 1)]);
                 }
             }
@@ -513,8 +487,8 @@ impl<'a> PosedPair<'a> {
     }
 }
 
-#[inline]
-fn push_children(stack: &mut Vec<(usize, usize)>, i: usize, j: usize, split_a: bool) {
+#[inline(always)]
+fn push_children(stack: &mut Vec<(u32, u32)>, i: u32, j: u32, split_a: bool) {
     if split_a {
         stack.push((i + 1, j));
         stack.push((i, j));
@@ -551,10 +525,8 @@ impl Collider {
         pose_b: &Isometry3<f64>,
     ) -> Result<bool, PoseError> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        let mut stack = Vec::with_capacity(128);
-        stack.push((0, 0));
         Ok(pair
-            .traverse(&mut stack, |_, _| ControlFlow::Break(()))
+            .run(&[(0, 0)], |_, _| ControlFlow::Break(()))
             .is_break())
     }
 
@@ -570,16 +542,13 @@ impl Collider {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
         let threads = cores();
         let mut out = if threads <= 1 {
-            collect_pairs(&pair, vec![(0, 0)])
+            pair.collect_pairs(&[(0, 0)])
         } else {
             let tasks = pair.split(threads * TASKS_PER_CORE);
             tasks
                 .par_iter()
-                .map(|&task| collect_pairs(&pair, vec![task]))
-                .reduce(Vec::new, |mut x, y| {
-                    x.extend(y);
-                    x
-                })
+                .flat_map_iter(|&task| pair.collect_pairs(&[task]))
+                .collect()
         };
         out.sort_unstable();
         Ok(out)
@@ -594,7 +563,7 @@ impl Collider {
         pose_b: &Isometry3<f64>,
     ) -> Result<Vec<(u32, u32)>, PoseError> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        let mut out = collect_pairs(&pair, vec![(0, 0)]);
+        let mut out = pair.collect_pairs(&[(0, 0)]);
         out.sort_unstable();
         Ok(out)
     }
@@ -734,8 +703,8 @@ impl Collider {
             }
             let s = node.start as usize;
             if node.is_leaf() {
-                for &t in &bvh.order()[s..s + node.count as usize] {
-                    let placed = place(self, t, pose);
+                for k in s..s + node.count as usize {
+                    let placed = place(self.pose_tree(), k, pose);
                     if test(&placed.bounds) {
                         visit(&placed)?;
                     }
@@ -747,15 +716,6 @@ impl Collider {
         }
         ControlFlow::Continue(())
     }
-}
-
-fn collect_pairs(pair: &PosedPair<'_>, mut stack: Vec<(usize, usize)>) -> Vec<(u32, u32)> {
-    let mut out = Vec::new();
-    let _ = pair.traverse::<()>(&mut stack, |i, j| {
-        out.push((i, j));
-        ControlFlow::Continue(())
-    });
-    out
 }
 
 #[cfg(test)]
@@ -815,6 +775,148 @@ mod tests {
                 prop_assert!(wb.overlaps(&point));
             }
         }
+    }
+
+    /// Nodes from the leaf of triangle `t` (leaf position in the tree's order) up to the root.
+    fn ancestors(c: &Collider, t: u32) -> Vec<usize> {
+        let nodes = c.pose_tree().nodes();
+        let mut parent = vec![usize::MAX; nodes.len()];
+        for (i, n) in nodes.iter().enumerate() {
+            if !n.is_leaf() {
+                parent[n.start as usize] = i;
+                parent[n.start as usize + 1] = i;
+            }
+        }
+        let k = c.bvh().order().iter().position(|&u| u == t).unwrap();
+        let mut at = nodes
+            .iter()
+            .position(|n| n.is_leaf() && (n.start..n.start + n.count).contains(&(k as u32)))
+            .unwrap();
+        let mut out = vec![at];
+        while parent[at] != usize::MAX {
+            at = parent[at];
+            out.push(at);
+        }
+        out
+    }
+
+    /// Every pair of nodes holding two placed triangles that meet passes the box test under
+    /// the poses (not only the pairs the traversal happens to visit), and the traversal finds
+    /// exactly the pairs brute force finds. Returns the number of meeting pairs.
+    fn box_test_keeps_meeting_pairs(
+        a: &Collider,
+        pa: &Isometry3<f64>,
+        b: &Collider,
+        pb: &Isometry3<f64>,
+    ) -> Result<usize, TestCaseError> {
+        let (wa, wb) = (a.placed(pa).unwrap(), b.placed(pb).unwrap());
+        let want = wa.intersecting_pairs(&wb, crate::query::Mode::Brute);
+        let pair = PosedPair::new(a, pa, b, pb).unwrap();
+        let (na, nb) = (a.pose_tree().nodes(), b.pose_tree().nodes());
+        for &(i, j) in &want {
+            for &x in &ancestors(a, i) {
+                for &y in &ancestors(b, j) {
+                    prop_assert!(pair.may_overlap(&na[x], &nb[y]), "{i} {j}: nodes {x} {y}");
+                }
+            }
+        }
+        let mut got = pair.collect_pairs(&[(0, 0)]);
+        got.sort_unstable();
+        prop_assert_eq!(got, want.clone());
+        Ok(want.len())
+    }
+
+    fn soup(seed: u64, n: usize, spread: f64) -> crate::TriMesh {
+        // A small local generator (query sits above the `testing` module).
+        let mut state = seed;
+        let mut float = |lo: f64, hi: f64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+        };
+        let mut v = Vec::new();
+        let mut t = Vec::new();
+        for k in 0..n as u32 {
+            let c = Vector3::new(
+                float(-spread, spread),
+                float(-spread, spread),
+                float(-spread, spread),
+            );
+            for _ in 0..3 {
+                v.push(Point3::from(
+                    c + Vector3::new(float(-0.5, 0.5), float(-0.5, 0.5), float(-0.5, 0.5)),
+                ));
+            }
+            // Every 5th triangle degenerate (a repeated corner).
+            t.push(if k % 5 == 0 {
+                [3 * k, 3 * k + 1, 3 * k + 1]
+            } else {
+                [3 * k, 3 * k + 1, 3 * k + 2]
+            });
+        }
+        crate::TriMesh::new(v, t).unwrap()
+    }
+
+    /// Exact rotations (identity, half turns about the axes) and rounded quarter turns.
+    fn lattice_rotation(k: usize) -> UnitQuaternion<f64> {
+        let q = |w, x, y, z| UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(w, x, y, z));
+        match k {
+            0 => UnitQuaternion::identity(),
+            1 => q(0.0, 1.0, 0.0, 0.0),
+            2 => q(0.0, 0.0, 1.0, 0.0),
+            3 => q(0.0, 0.0, 0.0, 1.0),
+            4 => UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2),
+            _ => UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -std::f64::consts::FRAC_PI_2),
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Random soups (with degenerate triangles) at random poses, both meshes moved.
+        #[test]
+        fn box_test_never_rejects_meeting_triangles(
+            seed in any::<u64>(),
+            ra in prop::array::uniform3(-4.0f64..4.0), ta in prop::array::uniform3(-1.0f64..1.0),
+            rb in prop::array::uniform3(-4.0f64..4.0), tb in prop::array::uniform3(-1.0f64..1.0),
+        ) {
+            let a = Collider::new(soup(seed, 60, 1.0));
+            let b = Collider::new(soup(seed ^ 0x5555, 40, 1.0));
+            box_test_keeps_meeting_pairs(&a, &pose(ra, ta), &b, &pose(rb, tb))?;
+        }
+
+        /// Integer cubes in face, edge and corner contact (and coplanar faces) at exact and
+        /// quarter-turn rotations: every contact survives the box test.
+        #[test]
+        fn box_test_keeps_touching_cubes(
+            lo in prop::array::uniform3(-2i32..2), size in prop::array::uniform3(1i32..3),
+            k in 0usize..6, l in 0usize..6, t in prop::array::uniform3(-3i32..4),
+        ) {
+            let hi = [lo[0] + size[0], lo[1] + size[1], lo[2] + size[2]];
+            let f = |p: [i32; 3]| Point3::from(p.map(f64::from));
+            let a = Collider::new(crate::TriMesh::cuboid(f(lo), f(hi)).unwrap());
+            let b = Collider::new(crate::TriMesh::cuboid(f([0, 0, 0]), f(size)).unwrap());
+            let pa = Isometry3::from_parts(nalgebra::Translation3::identity(), lattice_rotation(k));
+            let pb = Isometry3::from_parts(
+                nalgebra::Translation3::new(t[0] as f64, t[1] as f64, t[2] as f64),
+                lattice_rotation(l),
+            );
+            box_test_keeps_meeting_pairs(&a, &pa, &b, &pb)?;
+        }
+    }
+
+    /// The cube tests above are not vacuous: exact face contact after a half turn is kept.
+    #[test]
+    fn touching_after_a_half_turn_is_kept() {
+        let f = |x, y, z| Point3::new(x, y, z);
+        let a = Collider::new(crate::TriMesh::cuboid(f(0.0, 0.0, 0.0), f(1.0, 1.0, 1.0)).unwrap());
+        let pb = Isometry3::from_parts(
+            nalgebra::Translation3::new(2.0, 1.0, 0.0),
+            lattice_rotation(3),
+        );
+        let n = box_test_keeps_meeting_pairs(&a, &Isometry3::identity(), &a, &pb).unwrap();
+        assert!(n > 0);
     }
 
     #[test]

@@ -1,0 +1,171 @@
+//! The triangles of a leaf placed under a pose, on demand, each leaf at most once per
+//! traversal, in scratch memory that a thread keeps from one query to the next (no allocation
+//! per pose once it has grown).
+//!
+//! A triangle is placed with **the expression `pose * v` of
+//! [`TriMesh::transformed`](crate::TriMesh::transformed)** (hence of
+//! [`Collider::placed`](crate::query::Collider::placed)), so its coordinates are bit-identical
+//! to the placed mesh's.
+
+use std::cell::RefCell;
+use std::ops::Range;
+
+use nalgebra::Isometry3;
+
+use crate::bvh::Aabb;
+use crate::query::pose_tree::{PoseNode, PoseTree};
+use crate::Triangle;
+
+/// A triangle placed exactly as [`Collider::placed`](crate::query::Collider::placed) places
+/// it, with its (exact) box and its index in the mesh.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Placed {
+    pub tri: Triangle,
+    pub bounds: Aabb,
+    pub index: u32,
+}
+
+/// Places the triangle at leaf position `k` of `tree`.
+#[inline]
+pub(crate) fn place(tree: &PoseTree, k: usize, iso: &Isometry3<f64>) -> Placed {
+    let [a, b, d] = tree.vertices(k);
+    // The expression of `TriMesh::transformed`, hence bit-identical coordinates.
+    let (a, b, d) = (iso * a, iso * b, iso * d);
+    let bounds = Aabb::of_points(&[a, b, d]);
+    // The range check of every pose query keeps the coordinates finite (no overflow).
+    let tri = Triangle::new(a, b, d)
+        .unwrap_or_else(|_| unreachable!("range-checked pose gives finite coordinates"));
+    Placed {
+        tri,
+        bounds,
+        index: tree.index(k),
+    }
+}
+
+/// Which leaves of one tree are placed in the current traversal: `stamp[node]` equals the
+/// traversal's epoch when leaf `node` is placed, at `first[node]..` in [`Scratch::placed`].
+#[derive(Debug, Default)]
+struct Stamps {
+    stamp: Vec<u32>,
+    first: Vec<u32>,
+}
+
+/// Per-thread memory of the pose traversals.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    epoch: u32,
+    trees: [Stamps; 2],
+    placed: Vec<Placed>,
+    /// The traversal's stack of node pairs.
+    pub stack: Vec<(u32, u32)>,
+}
+
+impl Scratch {
+    /// Starts a traversal of two trees of `nodes_a` and `nodes_b` nodes: no leaf is placed.
+    fn begin(&mut self, nodes_a: usize, nodes_b: usize) {
+        self.epoch = self.epoch.wrapping_add(1);
+        if self.epoch == 0 {
+            for t in &mut self.trees {
+                t.stamp.fill(0);
+            }
+            self.epoch = 1;
+        }
+        for (t, n) in self.trees.iter_mut().zip([nodes_a, nodes_b]) {
+            if t.stamp.len() < n {
+                t.stamp.resize(n, 0);
+                t.first.resize(n, 0);
+            }
+        }
+        self.placed.clear();
+        self.stack.clear();
+    }
+
+    /// The placed triangles of leaf `node` of tree `side` (0: A, 1: B), placing them on first
+    /// use in this traversal.
+    #[inline]
+    pub fn leaf(
+        &mut self,
+        side: usize,
+        node: u32,
+        n: &PoseNode,
+        tree: &PoseTree,
+        iso: &Isometry3<f64>,
+    ) -> Range<usize> {
+        let t = &mut self.trees[side];
+        let i = node as usize;
+        let count = n.count as usize;
+        if t.stamp[i] == self.epoch {
+            let s = t.first[i] as usize;
+            return s..s + count;
+        }
+        let s = self.placed.len();
+        t.stamp[i] = self.epoch;
+        t.first[i] = s as u32;
+        let start = n.start as usize;
+        self.placed
+            .extend((start..start + count).map(|k| place(tree, k, iso)));
+        s..s + count
+    }
+
+    /// The placed triangles of a range returned by [`leaf`](Self::leaf).
+    #[inline(always)]
+    pub fn placed(&self, r: Range<usize>) -> &[Placed] {
+        &self.placed[r]
+    }
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+/// Runs `f` with this thread's scratch, set up for a traversal of two trees of `nodes_a` and
+/// `nodes_b` nodes (a fresh one if the thread's is in use, e.g. by a caller up the stack).
+pub(crate) fn with_scratch<R>(
+    nodes_a: usize,
+    nodes_b: usize,
+    f: impl FnOnce(&mut Scratch) -> R,
+) -> R {
+    SCRATCH.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut s) => {
+            s.begin(nodes_a, nodes_b);
+            f(&mut s)
+        }
+        Err(_) => {
+            let mut s = Scratch::default();
+            s.begin(nodes_a, nodes_b);
+            f(&mut s)
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::query::Collider;
+    use crate::TriMesh;
+
+    /// Leaves placed in an earlier traversal (or of another tree) are placed again, and the
+    /// triangles are those of the placed mesh.
+    #[test]
+    fn epochs_separate_traversals() {
+        let c = Collider::new(TriMesh::bunny().unit());
+        let tree = c.pose_tree();
+        let leaf = tree
+            .nodes()
+            .iter()
+            .position(|n| n.is_leaf())
+            .expect("a leaf");
+        let n = tree.nodes()[leaf];
+        for k in 0..3 {
+            let iso = Isometry3::translation(0.1 * k as f64, 0.0, 0.0);
+            let placed = c.placed(&iso).unwrap();
+            with_scratch(tree.nodes().len(), tree.nodes().len(), |s| {
+                let r = s.leaf(0, leaf as u32, &n, tree, &iso);
+                assert_eq!(s.leaf(0, leaf as u32, &n, tree, &iso), r);
+                for p in s.placed(r) {
+                    assert_eq!(p.tri, placed.triangle(p.index));
+                }
+            });
+        }
+    }
+}
