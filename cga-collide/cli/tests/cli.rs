@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{cga, json, temp_dir};
+use common::{cga, cube_off, json, temp_dir};
 
 #[test]
 fn collide_modes_agree_and_write_pairs_and_image() {
@@ -107,31 +107,6 @@ fn bad_input_gives_an_error_not_a_panic() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("radius"));
     let out = cga(&["collide", "bunny", "bunny", "--translate", "1,2"], &dir);
     assert!(!out.status.success());
-}
-
-fn cube_off(lo: f64, hi: f64) -> String {
-    let mut s = String::from("OFF\n8 12 0\n");
-    for i in 0..8 {
-        let c = |bit: usize| if i >> bit & 1 == 1 { hi } else { lo };
-        s += &format!("{} {} {}\n", c(0), c(1), c(2));
-    }
-    for f in [
-        [0, 2, 1],
-        [1, 2, 3],
-        [4, 5, 6],
-        [5, 7, 6],
-        [0, 1, 4],
-        [1, 5, 4],
-        [2, 6, 3],
-        [3, 6, 7],
-        [0, 4, 2],
-        [2, 4, 6],
-        [1, 3, 5],
-        [3, 7, 5],
-    ] {
-        s += &format!("3 {} {} {}\n", f[0], f[1], f[2]);
-    }
-    s
 }
 
 #[test]

@@ -43,3 +43,29 @@ pub fn error(out: &Output) -> String {
     assert!(!err.contains("panicked"), "a panic, not an error: {err}");
     err
 }
+
+/// A cube `[lo, hi]³` as an OFF file (12 triangles, outward normals).
+pub fn cube_off(lo: f64, hi: f64) -> String {
+    let mut s = String::from("OFF\n8 12 0\n");
+    for i in 0..8 {
+        let c = |bit: usize| if i >> bit & 1 == 1 { hi } else { lo };
+        s += &format!("{} {} {}\n", c(0), c(1), c(2));
+    }
+    for f in [
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ] {
+        s += &format!("3 {} {} {}\n", f[0], f[1], f[2]);
+    }
+    s
+}
