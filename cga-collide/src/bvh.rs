@@ -419,13 +419,68 @@ impl Bvh {
     pub fn for_each_pair<B>(
         &self,
         other: &Bvh,
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        self.descend_pairs(other, false, Aabb::overlaps, visit)
+    }
+
+    /// [`for_each_pair`](Self::for_each_pair) with `near` in place of box overlap: every pair of
+    /// triangles whose boxes pass `near`, reached through node pairs passing `near`. No pair is
+    /// missed when `near` passes every pair of boxes enclosing a passing pair (e.g. "within
+    /// distance `c`").
+    pub(crate) fn for_each_pair_where<B>(
+        &self,
+        other: &Bvh,
+        near: impl Fn(&Aabb, &Aabb) -> bool,
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        self.descend_pairs(other, false, near, visit)
+    }
+
+    /// Calls `visit(i, j)` once for every unordered pair of distinct triangles of this one mesh
+    /// whose boxes overlap; stops early when `visit` breaks.
+    pub(crate) fn for_each_self_pair<B>(
+        &self,
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        if self.order.is_empty() {
+            return ControlFlow::Continue(()); // an empty mesh's root is not a leaf
+        }
+        self.descend_pairs(self, true, Aabb::overlaps, visit)
+    }
+
+    /// The simultaneous descent behind the pair enumerations. With `same_tree` (`other` is
+    /// `self`), a node paired with itself yields its own pairs once, and its children's.
+    fn descend_pairs<B>(
+        &self,
+        other: &Bvh,
+        same_tree: bool,
+        near: impl Fn(&Aabb, &Aabb) -> bool,
         mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
         let mut stack = Vec::with_capacity(128);
         stack.push((0usize, 0usize));
         while let Some((i, j)) = stack.pop() {
             let (a, b) = (&self.nodes[i], &other.nodes[j]);
-            if !a.bounds.overlaps(&b.bounds) {
+            if same_tree && i == j {
+                let s = a.start as usize;
+                if a.is_leaf() {
+                    let e = s + a.count as usize;
+                    for ka in s..e {
+                        for kb in ka + 1..e {
+                            if self.boxes[ka].overlaps(&self.boxes[kb]) {
+                                visit(self.order[ka], self.order[kb])?;
+                            }
+                        }
+                    }
+                } else {
+                    stack.push((s, s + 1));
+                    stack.push((s + 1, s + 1));
+                    stack.push((s, s));
+                }
+                continue;
+            }
+            if !near(&a.bounds, &b.bounds) {
                 continue;
             }
             match (a.is_leaf(), b.is_leaf()) {
@@ -433,11 +488,11 @@ impl Bvh {
                     let (sa, sb) = (a.start as usize, b.start as usize);
                     for ka in sa..sa + a.count as usize {
                         let ba = &self.boxes[ka];
-                        if !ba.overlaps(&b.bounds) {
+                        if !near(ba, &b.bounds) {
                             continue;
                         }
                         for kb in sb..sb + b.count as usize {
-                            if ba.overlaps(&other.boxes[kb]) {
+                            if near(ba, &other.boxes[kb]) {
                                 visit(self.order[ka], other.order[kb])?;
                             }
                         }

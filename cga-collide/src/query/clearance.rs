@@ -50,7 +50,7 @@ use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use std::ops::ControlFlow;
 
 use crate::parallel::*;
-use crate::query::proximity::{boxes_within, for_each_near_pair};
+use crate::query::proximity::boxes_within;
 use crate::query::{Collider, Intersects};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
@@ -426,9 +426,8 @@ pub fn mesh_pairs_within_distance(a: &Collider, b: &Collider, c: f64) -> Vec<(u3
         return Vec::new();
     }
     let mut candidates = Vec::new();
-    let _ = for_each_near_pair::<()>(
-        (a.mesh(), a.bvh()),
-        (b.mesh(), b.bvh()),
+    let _ = a.bvh().for_each_pair_where::<()>(
+        b.bvh(),
         |x, y| boxes_within(x, y, c),
         |i, j| {
             candidates.push((i, j));
@@ -451,17 +450,17 @@ pub fn meshes_within_distance(a: &Collider, b: &Collider, c: f64) -> bool {
     if let Some(answer) = trivial(c) {
         return answer && a.mesh().num_triangles() > 0 && b.mesh().num_triangles() > 0;
     }
-    for_each_near_pair(
-        (a.mesh(), a.bvh()),
-        (b.mesh(), b.bvh()),
-        |x, y| boxes_within(x, y, c),
-        |i, j| {
-            if triangles_within(&mesh_tri(a, i), &mesh_tri(b, j), c) {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        },
-    )
-    .is_break()
+    a.bvh()
+        .for_each_pair_where(
+            b.bvh(),
+            |x, y| boxes_within(x, y, c),
+            |i, j| {
+                if triangles_within(&mesh_tri(a, i), &mesh_tri(b, j), c) {
+                    ControlFlow::Break(())
+                } else {
+                    ControlFlow::Continue(())
+                }
+            },
+        )
+        .is_break()
 }

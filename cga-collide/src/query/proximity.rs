@@ -1,12 +1,12 @@
-//! Descending two box hierarchies together by distance: the traversals behind mesh clearance,
-//! mesh distance and self-intersection. Only the public shape of [`Bvh`] (nodes and leaf order)
-//! is used; triangle boxes are recomputed from the mesh (exact `min`/`max`).
+//! Descending two box hierarchies together by distance: the box bounds behind mesh clearance
+//! and the best-first search behind mesh distance. The pair enumerations themselves (within a
+//! distance, or one mesh against itself) are [`Bvh`]'s. Only the public shape of [`Bvh`] (nodes
+//! and leaf order) is used here; triangle corners are read from the mesh.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
-use std::ops::ControlFlow;
 
-use crate::bvh::{triangle_box, Aabb, Bvh, MAX_LEAF};
+use crate::bvh::{Aabb, Bvh, MAX_LEAF};
 use crate::shape::mesh::TriMesh;
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true
@@ -38,65 +38,6 @@ pub(crate) fn boxes_within(a: &Aabb, b: &Aabb, c: f64) -> bool {
     }
     let c2 = c * c;
     !c2.is_finite() || s * (1.0 - 1e-9) <= c2 * (1.0 + 1e-9) + 1e-300
-}
-
-/// The box of triangle `t` of `mesh`.
-#[inline]
-pub(crate) fn tri_box(mesh: &TriMesh, t: u32) -> Aabb {
-    triangle_box(mesh.vertices(), &mesh.triangles()[t as usize])
-}
-
-/// Calls `visit(i, j)` for every pair of a triangle `i` of `ma` and `j` of `mb` whose boxes
-/// pass `near` (reached through node pairs passing `near`); stops when `visit` breaks.
-pub(crate) fn for_each_near_pair<B>(
-    (ma, ta): (&TriMesh, &Bvh),
-    (mb, tb): (&TriMesh, &Bvh),
-    near: impl Fn(&Aabb, &Aabb) -> bool,
-    mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
-) -> ControlFlow<B> {
-    let (na, nb) = (ta.nodes(), tb.nodes());
-    let mut stack = Vec::with_capacity(128);
-    stack.push((0usize, 0usize));
-    while let Some((i, j)) = stack.pop() {
-        let (a, b) = (&na[i], &nb[j]);
-        if !near(&a.bounds, &b.bounds) {
-            continue;
-        }
-        match (a.is_leaf(), b.is_leaf()) {
-            (true, true) => {
-                let (sa, sb) = (a.start as usize, b.start as usize);
-                for &x in &ta.order()[sa..sa + a.count as usize] {
-                    let bx = tri_box(ma, x);
-                    if !near(&bx, &b.bounds) {
-                        continue;
-                    }
-                    for &y in &tb.order()[sb..sb + b.count as usize] {
-                        if near(&bx, &tri_box(mb, y)) {
-                            visit(x, y)?;
-                        }
-                    }
-                }
-            }
-            (false, true) => {
-                stack.push((a.start as usize + 1, j));
-                stack.push((a.start as usize, j));
-            }
-            (true, false) => {
-                stack.push((i, b.start as usize + 1));
-                stack.push((i, b.start as usize));
-            }
-            (false, false) => {
-                if a.bounds.half_area() >= b.bounds.half_area() {
-                    stack.push((a.start as usize + 1, j));
-                    stack.push((a.start as usize, j));
-                } else {
-                    stack.push((i, b.start as usize + 1));
-                    stack.push((i, b.start as usize));
-                }
-            }
-        }
-    }
-    ControlFlow::Continue(())
 }
 
 /// The corners of a triangle of a mesh as raw coordinates.
@@ -201,79 +142,4 @@ pub(crate) fn nearest_pair(
         }
     }
     Some(best)
-}
-
-/// Calls `visit(i, j)` (with `i != j`, each unordered pair once) for every pair of triangles of
-/// one mesh whose boxes overlap (closed, exact); stops when `visit` breaks.
-pub(crate) fn for_each_self_pair<B>(
-    mesh: &TriMesh,
-    tree: &Bvh,
-    mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
-) -> ControlFlow<B> {
-    let nodes = tree.nodes();
-    if mesh.num_triangles() == 0 {
-        return ControlFlow::Continue(());
-    }
-    let order = tree.order();
-    let mut stack = Vec::with_capacity(128);
-    stack.push((0usize, 0usize));
-    while let Some((i, j)) = stack.pop() {
-        let (a, b) = (&nodes[i], &nodes[j]);
-        if i == j {
-            let s = a.start as usize;
-            if a.is_leaf() {
-                let leaf = &order[s..s + a.count as usize];
-                for (k, &x) in leaf.iter().enumerate() {
-                    let bx = tri_box(mesh, x);
-                    for &y in &leaf[k + 1..] {
-                        if bx.overlaps(&tri_box(mesh, y)) {
-                            visit(x, y)?;
-                        }
-                    }
-                }
-            } else {
-                stack.push((s, s + 1));
-                stack.push((s + 1, s + 1));
-                stack.push((s, s));
-            }
-            continue;
-        }
-        if !a.bounds.overlaps(&b.bounds) {
-            continue;
-        }
-        match (a.is_leaf(), b.is_leaf()) {
-            (true, true) => {
-                let (sa, sb) = (a.start as usize, b.start as usize);
-                for &x in &order[sa..sa + a.count as usize] {
-                    let bx = tri_box(mesh, x);
-                    if !bx.overlaps(&b.bounds) {
-                        continue;
-                    }
-                    for &y in &order[sb..sb + b.count as usize] {
-                        if bx.overlaps(&tri_box(mesh, y)) {
-                            visit(x, y)?;
-                        }
-                    }
-                }
-            }
-            (false, true) => {
-                stack.push((a.start as usize + 1, j));
-                stack.push((a.start as usize, j));
-            }
-            (true, false) => {
-                stack.push((i, b.start as usize + 1));
-                stack.push((i, b.start as usize));
-            }
-            (false, false) => {
-                if a.bounds.half_area() >= b.bounds.half_area() {
-                    stack.push((a.start as usize + 1, j));
-                    stack.push((a.start as usize, j));
-                } else {
-                    stack.push((i, b.start as usize + 1));
-                    stack.push((i, b.start as usize));
-                }
-            }
-        }
-    }
-    ControlFlow::Continue(())
 }

@@ -36,7 +36,6 @@ use std::ops::ControlFlow;
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::parallel::*;
-use crate::query::proximity::for_each_self_pair;
 use crate::query::{Collider, Intersects};
 use crate::shape::{Segment, Triangle};
 
@@ -167,7 +166,7 @@ pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
 /// enumerates the pairs whose boxes overlap; they are decided in parallel.
 pub fn self_intersections(mesh: &Collider) -> Vec<(u32, u32)> {
     let mut candidates = Vec::new();
-    let _ = for_each_self_pair::<()>(mesh.mesh(), mesh.bvh(), |i, j| {
+    let _ = mesh.bvh().for_each_self_pair::<()>(|i, j| {
         candidates.push((i.min(j), i.max(j)));
         ControlFlow::Continue(())
     });
@@ -191,14 +190,15 @@ pub fn self_intersects(mesh: &Collider) -> bool {
         let [a, b, c] = mesh.mesh().triangle(i as usize);
         [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
     };
-    for_each_self_pair(mesh.mesh(), mesh.bvh(), |i, j| {
-        if meet_elsewhere(&tri(i), &tri(j)) {
-            ControlFlow::Break(())
-        } else {
-            ControlFlow::Continue(())
-        }
-    })
-    .is_break()
+    mesh.bvh()
+        .for_each_self_pair(|i, j| {
+            if meet_elsewhere(&tri(i), &tri(j)) {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        })
+        .is_break()
 }
 
 /// [`self_intersections`] by brute force over every pair (in parallel, no hierarchy, no box
