@@ -50,6 +50,7 @@ use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use std::ops::ControlFlow;
 
 use crate::parallel::*;
+use crate::query::intersects::extremes;
 use crate::query::proximity::boxes_within;
 use crate::query::{Collider, Intersects};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
@@ -69,25 +70,6 @@ fn pt(p: &Point3<f64>) -> P3 {
 fn tri(t: &Triangle) -> [P3; 3] {
     let [a, b, c] = t.vertices();
     [pt(a), pt(b), pt(c)]
-}
-
-/// The two extreme points of collinear points (exact: order along an axis where they differ).
-fn extremes(p: &[P3; 3]) -> (P3, P3) {
-    for k in 0..3 {
-        let (mut lo, mut hi) = (0, 0);
-        for (i, q) in p.iter().enumerate() {
-            if q[k] < p[lo][k] {
-                lo = i;
-            }
-            if q[k] > p[hi][k] {
-                hi = i;
-            }
-        }
-        if p[lo][k] < p[hi][k] {
-            return (p[lo], p[hi]);
-        }
-    }
-    (p[0], p[0])
 }
 
 // ---------------------------------------------------------------- points within a reach

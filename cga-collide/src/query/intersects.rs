@@ -100,7 +100,7 @@ fn orient2d<K: Kernel>(a: &P2, b: &P2, c: &P2) -> Ordering {
 }
 
 /// The two extreme points of collinear points (exact: order along an axis where they differ).
-fn extremes<const D: usize>(p: &[[f64; D]]) -> ([f64; D], [f64; D]) {
+pub(crate) fn extremes<const D: usize>(p: &[[f64; D]]) -> ([f64; D], [f64; D]) {
     for k in 0..D {
         let (mut lo, mut hi) = (0, 0);
         for (i, q) in p.iter().enumerate() {

@@ -36,6 +36,7 @@ use std::ops::ControlFlow;
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::parallel::*;
+use crate::query::intersects::extremes;
 use crate::query::{Collider, Intersects};
 use crate::shape::{Segment, Triangle};
 
@@ -48,25 +49,6 @@ fn triangle(p: &P3, q: &P3, r: &P3) -> Triangle {
 
 fn degenerate(t: &[P3; 3]) -> bool {
     ExactKernel::plane(t).is_degenerate()
-}
-
-/// The two extreme points of collinear points (exact: order along an axis where they differ).
-fn extremes(p: &[P3; 3]) -> (P3, P3) {
-    for k in 0..3 {
-        let (mut lo, mut hi) = (0, 0);
-        for (i, q) in p.iter().enumerate() {
-            if q[k] < p[lo][k] {
-                lo = i;
-            }
-            if q[k] > p[hi][k] {
-                hi = i;
-            }
-        }
-        if p[lo][k] < p[hi][k] {
-            return (p[lo], p[hi]);
-        }
-    }
-    (p[0], p[0])
 }
 
 /// A part of a triangle around a shared vertex: the triangle itself or a segment.
