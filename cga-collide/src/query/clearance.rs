@@ -171,7 +171,7 @@ fn triangle_triangle_apart(p: &[P3; 3], q: &[P3; 3], c: f64) -> bool {
 
 /// `None` when `c` alone decides (`c < 0`, NaN: `false`; `+∞`: `true`).
 #[inline]
-fn trivial(c: f64) -> Option<bool> {
+pub(crate) fn trivial(c: f64) -> Option<bool> {
     if (0.0..f64::INFINITY).contains(&c) {
         None
     } else {

@@ -735,61 +735,91 @@ fn centroid3(t: &[V<f64>; 3]) -> V<f64> {
     ]
 }
 
-/// The outcome of the `f64` search over two meshes.
-struct MeshSearch {
-    /// The nearest pair found, with its `f64` squared distance and witnesses.
-    near: Near<f64>,
-    i: u32,
-    j: u32,
-    /// Every other examined pair whose proved lower bound (first field) did not exceed the best
-    /// squared distance at the time: the only pairs the lower end of the error bound must
-    /// still check exactly.
-    open: Vec<(f64, u32, u32)>,
+/// The open pairs of a mesh search: `(proved lower bound, i, j)` for every examined pair whose
+/// proved bounds did not exceed the best squared distance at the time (see [`examine_pair`]).
+pub(crate) type Open = Vec<(f64, u32, u32)>;
+
+/// One examined pair of the `f64` nearest-pair search (triangles `x` of A and `y` of B with
+/// corners `p` and `q`; `best` the best squared distance so far): its `f64` squared distance,
+/// or `+∞` when it is proved farther than `best`. First a proved lower bound from the
+/// separation along the line of the centroids (for small triangles far apart, nearly their
+/// distance; the normals were tried too and cost more than they saved); only when that does not
+/// beat `best` is the `f64` closest-points routine run, and its witnesses' direction gives a
+/// second proved bound. A pair whose proved bounds stay at or below the best is pushed on
+/// `open` with the larger bound.
+pub(crate) fn examine_pair(
+    x: u32,
+    p: &[V<f64>; 3],
+    y: u32,
+    q: &[V<f64>; 3],
+    best: f64,
+    open: &mut Open,
+) -> f64 {
+    let centres = separation(&sub(&centroid3(q), &centroid3(p)), p, q);
+    if centres.is_some_and(|s| separated_beyond(s, best)) {
+        return f64::INFINITY; // proved farther than the best so far
+    }
+    let (d2, wx, wy) = triangle_triangle(p, q);
+    let witnesses = separation(&sub(&wy, &wx), p, q);
+    let seps = [centres, witnesses];
+    if !seps
+        .iter()
+        .flatten()
+        .any(|&s| separated_beyond(s, best.min(d2)))
+    {
+        let lb = seps
+            .iter()
+            .flatten()
+            .map(|&s| separation_bound(s))
+            .fold(0.0, f64::max);
+        open.push((lb, x, y));
+    }
+    d2
 }
 
-/// The `f64` nearest pair of triangles of two meshes: best-first branch and bound on the
-/// hierarchies, pruning node and triangle pairs whose box distance exceeds the best so far.
-/// Each examined pair first gets a proved lower bound from the separation along the line of
-/// its centroids (for small triangles far apart, nearly their distance; the normals were
-/// tried too and cost more than they saved); only when that does not beat the best so far is
-/// the `f64` closest-points routine run, and its witnesses' direction gives a second proved
-/// bound. Pairs whose proved bounds stay at or below the best are kept in
-/// [`MeshSearch::open`].
-fn mesh_search(a: &Collider, b: &Collider) -> Option<MeshSearch> {
-    let mut open = Vec::new();
-    let (_, i, j) = nearest_pair(
-        (a.mesh(), a.bvh()),
-        (b.mesh(), b.bvh()),
-        |x, p, y, q, best| {
-            let centres = separation(&sub(&centroid3(q), &centroid3(p)), p, q);
-            if centres.is_some_and(|s| separated_beyond(s, best)) {
-                return f64::INFINITY; // proved farther than the best so far
-            }
-            let (d2, wx, wy) = triangle_triangle(p, q);
-            let witnesses = separation(&sub(&wy, &wx), p, q);
-            let seps = [centres, witnesses];
-            if !seps
-                .iter()
-                .flatten()
-                .any(|&s| separated_beyond(s, best.min(d2)))
-            {
-                let lb = seps
-                    .iter()
-                    .flatten()
-                    .map(|&s| separation_bound(s))
-                    .fold(0.0, f64::max);
-                open.push((lb, x, y));
-            }
-            d2
+/// The certified result of a mesh search that found the pair `(i, j)` and left `open` (see
+/// [`examine_pair`]); `tri_a(i)` and `tri_b(j)` give the triangles' corners.
+///
+/// Every pair not in `open` is proved farther than the best `f64` squared distance, hence than
+/// any `c` the certification tries for the lower end (`c < distance`): only `open` can bring
+/// the distance down to `c`. So the bound depends on the pair `(i, j)` and on the meshes, not
+/// on the order of the search.
+pub(crate) fn certified_mesh_distance(
+    (i, j): (u32, u32),
+    open: &Open,
+    tri_a: impl Fn(u32) -> [V<f64>; 3],
+    tri_b: impl Fn(u32) -> [V<f64>; 3],
+) -> Distance {
+    let (s, t) = (tri_a(i), tri_b(j));
+    let (d2, x, y) = triangle_triangle(&s, &t);
+    let distance = d2.sqrt();
+    let error_bound = certify(
+        distance,
+        scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
+        || triangles_within(&s, &t, 0.0),
+        |c| triangles_within(&s, &t, c),
+        |c| {
+            open.iter()
+                .any(|&(lb, x, y)| lb <= c && triangles_within(&tri_a(x), &tri_b(y), c))
         },
-    )?;
-    let near = triangle_triangle(&mesh_tri(a, i), &mesh_tri(b, j));
-    Some(MeshSearch { near, i, j, open })
+    );
+    Distance {
+        distance,
+        error_bound,
+        witness_a: Point3::from(x),
+        witness_b: Point3::from(y),
+        triangles: Some((i, j)),
+    }
 }
 
 /// The minimum distance between the surfaces of two meshes (in the same frame, see
 /// [`Collider::placed`]), with witnesses, the triangle pair `(i, j)` attaining it and a
 /// certified error bound; `None` if a mesh has no triangles.
+///
+/// The `f64` search is best-first branch and bound on the hierarchies, pruning node and
+/// triangle pairs whose box distance exceeds the best so far, and pairs proved farther by a
+/// separation bound. Among pairs with the same `f64` squared distance, the smallest `(i, j)`
+/// is kept.
 ///
 /// The bound is proved over **all** triangle pairs, so it holds for the meshes' true distance
 /// even when several pairs nearly tie. The upper end: the exact clearance test of the pair
@@ -807,34 +837,18 @@ fn mesh_search(a: &Collider, b: &Collider) -> Option<MeshSearch> {
 /// # Ok::<(), cga_collide::mesh::MeshError>(())
 /// ```
 pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
-    let MeshSearch {
-        near: (d2, x, y),
-        i,
-        j,
-        open,
-    } = mesh_search(a, b)?;
-    let (s, t) = (mesh_tri(a, i), mesh_tri(b, j));
-    let distance = d2.sqrt();
-    let error_bound = certify(
-        distance,
-        scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
-        || triangles_within(&s, &t, 0.0),
-        |c| triangles_within(&s, &t, c),
-        // Every pair not in `open` is proved farther than the best `f64` squared distance,
-        // hence than any `c` the certification tries (`c < distance`): only `open` can
-        // bring the distance down to `c`.
-        |c| {
-            open.iter()
-                .any(|&(lb, x, y)| lb <= c && triangles_within(&mesh_tri(a, x), &mesh_tri(b, y), c))
-        },
-    );
-    Some(Distance {
-        distance,
-        error_bound,
-        witness_a: Point3::from(x),
-        witness_b: Point3::from(y),
-        triangles: Some((i, j)),
-    })
+    let mut open = Vec::new();
+    let (_, i, j) = nearest_pair(
+        (a.mesh(), a.bvh()),
+        (b.mesh(), b.bvh()),
+        |x, p, y, q, best| examine_pair(x, p, y, q, best, &mut open),
+    )?;
+    Some(certified_mesh_distance(
+        (i, j),
+        &open,
+        |x| mesh_tri(a, x),
+        |y| mesh_tri(b, y),
+    ))
 }
 
 /// The minimum distance between the surfaces of two meshes, exactly: the squared distance,

@@ -8,6 +8,8 @@
 //! to the placed mesh's.
 
 use std::cell::RefCell;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 use std::ops::Range;
 
 use nalgebra::Isometry3;
@@ -58,6 +60,8 @@ pub(crate) struct Scratch {
     placed: Vec<Placed>,
     /// The traversal's stack of node pairs.
     pub stack: Vec<(u32, u32)>,
+    /// The best-first search's queue of node pairs, nearest (smallest key) first.
+    pub heap: BinaryHeap<(Reverse<u64>, u32, u32)>,
 }
 
 impl Scratch {
@@ -78,6 +82,7 @@ impl Scratch {
         }
         self.placed.clear();
         self.stack.clear();
+        self.heap.clear();
     }
 
     /// The placed triangles of leaf `node` of tree `side` (0: A, 1: B), placing them on first

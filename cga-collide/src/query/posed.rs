@@ -70,6 +70,8 @@
 
 use std::ops::ControlFlow;
 
+mod distance;
+
 use nalgebra::{Isometry3, Point3};
 use thiserror::Error;
 
@@ -251,6 +253,9 @@ struct Relative {
     abs_r: Mat,
     t: [f64; 3],
     margin: f64,
+    /// `η`: a bound on every entry of `D M̂ - I` (`D = M̂ᵀ` of this frame's pose), so that
+    /// every row of `D` has Euclidean length at most `√(1 + η)` and `|D|₂² ≤ 1 + 3η`.
+    eta: f64,
 }
 
 fn mat_mul(x: &Mat, y: &Mat) -> Mat {
@@ -315,6 +320,7 @@ impl Relative {
             abs_r: r.map(|row| row.map(f64::abs)),
             t,
             margin: margin * (1.0 + 8.0 * U),
+            eta: eta_a,
         }
     }
 
@@ -323,17 +329,61 @@ impl Relative {
     /// (`|r c_b + t - c_a| > |r| e_b + e_a + margin` on an axis separates them).
     #[inline(always)]
     fn may_overlap(&self, a: &PoseNode, b: &PoseNode) -> bool {
+        self.may_be_within(a, b, 0.0)
+    }
+
+    /// The reach `w` to add on every axis of this frame for a clearance `c ≥ 0`:
+    /// `w ≥ c √(1 + η) (1 + 16u)` (module docs, clearance), `+∞` if that overflows.
+    #[inline]
+    fn widen(&self, c: f64) -> f64 {
+        c * (1.0 + self.eta) * (1.0 + 32.0 * U)
+    }
+
+    /// [`may_overlap`](Self::may_overlap) with every axis test widened by `w` (from
+    /// [`widen`](Self::widen)): `false` only if no placed triangle under `a` comes within `c`
+    /// of a placed triangle under `b`.
+    #[inline(always)]
+    fn may_be_within(&self, a: &PoseNode, b: &PoseNode, w: f64) -> bool {
         let (r, ar) = (&self.r, &self.abs_r);
         let mut apart = false;
         for i in 0..3 {
             let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
-            let reach =
-                ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2] + a.e[i] + self.margin;
+            let reach = ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2]
+                + a.e[i]
+                + self.margin
+                + w;
             apart |= d.abs() > reach;
         }
         !apart
     }
+
+    /// A lower bound on the squared distance between any placed triangle under node `a` of A
+    /// and any under node `b` of B (module docs, distance): the axis gaps of
+    /// [`may_overlap`](Self::may_overlap), squared and summed, shrunk by `1 - 4η - 32u`;
+    /// 0 when that is not far above the subnormal range.
+    #[inline(always)]
+    fn gap2(&self, a: &PoseNode, b: &PoseNode) -> f64 {
+        let (r, ar) = (&self.r, &self.abs_r);
+        let mut s = 0.0;
+        for i in 0..3 {
+            let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
+            let reach =
+                ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2] + a.e[i] + self.margin;
+            let g = (d.abs() - reach).max(0.0);
+            s += g * g;
+        }
+        let lb = s * (1.0 - 4.0 * self.eta - 32.0 * U);
+        if lb >= NORMAL {
+            lb
+        } else {
+            0.0
+        }
+    }
 }
+
+/// Lower bounds below this are dropped: far above the subnormal range, where rounding is
+/// absolute rather than relative.
+const NORMAL: f64 = 1.0e-290;
 
 /// Two colliders under their poses, ready to be traversed together.
 struct PosedPair<'a> {
@@ -378,18 +428,27 @@ impl<'a> PosedPair<'a> {
         self.rel.may_overlap(x, y) && self.inv.may_overlap(y, x)
     }
 
-    /// Calls `visit(i, j)` for every pair of placed triangles whose boxes overlap and which
-    /// meet (exactly), below the node pairs on `scratch.stack`; stops when `visit` breaks.
-    fn traverse<B>(
+    /// Whether two placed triangles meet (exact), behind a test of their exact boxes.
+    #[inline(always)]
+    fn meet(p: &Placed, q: &Placed) -> bool {
+        p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri)
+    }
+
+    /// The descent below the node pairs on `scratch.stack`: node pairs failing `near` are
+    /// pruned, and `visit(i, j)` gets every pair of placed triangles passing `keep`; stops
+    /// when `visit` breaks. `near` must be conservative for `keep` (module docs).
+    fn traverse_where<B>(
         &self,
         scratch: &mut Scratch,
+        near: impl Fn(&PoseNode, &PoseNode) -> bool,
+        keep: impl Fn(&Placed, &Placed) -> bool,
         mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
         let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
         let (na, nb) = (ta.nodes(), tb.nodes());
         while let Some((i, j)) = scratch.stack.pop() {
             let (x, y) = (&na[i as usize], &nb[j as usize]);
-            if !self.may_overlap(x, y) {
+            if !near(x, y) {
                 continue;
             }
             match (x.is_leaf(), y.is_leaf()) {
@@ -401,7 +460,7 @@ impl<'a> PosedPair<'a> {
                     let (pa, pb) = (scratch.placed(la), scratch.placed(lb));
                     for p in pa {
                         for q in pb {
-                            if p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri) {
+                            if keep(p, q) {
                                 visit(p.index, q.index)?;
                             }
                         }
@@ -427,26 +486,78 @@ impl<'a> PosedPair<'a> {
         start: &[(u32, u32)],
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
+        self.run_where(
+            start,
+            |x, y| self.may_overlap(x, y),
+            Self::meet,
+            visit,
+        )
+    }
+
+    /// [`traverse_where`](Self::traverse_where) from the node pairs `start` with this
+    /// thread's scratch memory.
+    fn run_where<B>(
+        &self,
+        start: &[(u32, u32)],
+        near: impl Fn(&PoseNode, &PoseNode) -> bool,
+        keep: impl Fn(&Placed, &Placed) -> bool,
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
         let (na, nb) = (self.a.pose_tree().nodes(), self.b.pose_tree().nodes());
         with_scratch(na.len(), nb.len(), |scratch| {
             scratch.stack.extend_from_slice(start);
-            self.traverse(scratch, visit)
+            self.traverse_where(scratch, near, keep, visit)
         })
     }
 
     /// Every intersecting pair below the node pairs `start`, unsorted.
     fn collect_pairs(&self, start: &[(u32, u32)]) -> Vec<(u32, u32)> {
+        self.collect_pairs_where(start, |x, y| self.may_overlap(x, y), Self::meet)
+    }
+
+    /// Every pair passing `keep` below the node pairs `start` (pruned by `near`), unsorted.
+    fn collect_pairs_where(
+        &self,
+        start: &[(u32, u32)],
+        near: impl Fn(&PoseNode, &PoseNode) -> bool,
+        keep: impl Fn(&Placed, &Placed) -> bool,
+    ) -> Vec<(u32, u32)> {
         let mut out = Vec::new();
-        let _ = self.run::<()>(start, |i, j| {
+        let _ = self.run_where::<()>(start, near, keep, |i, j| {
             out.push((i, j));
             ControlFlow::Continue(())
         });
         out
     }
 
-    /// Node pairs covering the whole traversal, at least `want` of them when the trees allow
-    /// (breadth-first split of the root pair), for spreading over the cores.
-    fn split(&self, want: usize) -> Vec<(u32, u32)> {
+    /// Every pair passing `keep` (pruned by `near`), sorted, the traversal split over the
+    /// cores (rayon, feature `parallel`).
+    fn all_pairs_where(
+        &self,
+        near: impl Fn(&PoseNode, &PoseNode) -> bool + Sync,
+        keep: impl Fn(&Placed, &Placed) -> bool + Sync,
+    ) -> Vec<(u32, u32)> {
+        let threads = cores();
+        let mut out = if threads <= 1 {
+            self.collect_pairs_where(&[(0, 0)], &near, &keep)
+        } else {
+            let tasks = self.split_where(threads * TASKS_PER_CORE, &near);
+            tasks
+                .par_iter()
+                .flat_map_iter(|&task| self.collect_pairs_where(&[task], &near, &keep))
+                .collect()
+        };
+        out.sort_unstable();
+        out
+    }
+
+    /// Node pairs covering the whole traversal pruned by `near`, at least `want` of them when
+    /// the trees allow (breadth-first split of the root pair), for spreading over the cores.
+    fn split_where(
+        &self,
+        want: usize,
+        near: impl Fn(&PoseNode, &PoseNode) -> bool,
+    ) -> Vec<(u32, u32)> {
         let (na, nb) = (self.a.pose_tree().nodes(), self.b.pose_tree().nodes());
         let mut level = vec![(0u32, 0u32)];
         for _ in 0..64 {
@@ -457,7 +568,7 @@ impl<'a> PosedPair<'a> {
             let mut grew = false;
             for &(i, j) in &level {
                 let (x, y) = (&na[i as usize], &nb[j as usize]);
-                if !self.may_overlap(x, y) {
+                if !near(x, y) {
                     continue;
                 }
                 let split_a = match (x.is_leaf(), y.is_leaf()) {
@@ -540,18 +651,7 @@ impl Collider {
         pose_b: &Isometry3<f64>,
     ) -> Result<Vec<(u32, u32)>, PoseError> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        let threads = cores();
-        let mut out = if threads <= 1 {
-            pair.collect_pairs(&[(0, 0)])
-        } else {
-            let tasks = pair.split(threads * TASKS_PER_CORE);
-            tasks
-                .par_iter()
-                .flat_map_iter(|&task| pair.collect_pairs(&[task]))
-                .collect()
-        };
-        out.sort_unstable();
-        Ok(out)
+        Ok(pair.all_pairs_where(|x, y| pair.may_overlap(x, y), PosedPair::meet))
     }
 
     /// Like [`intersecting_pairs_at`](Self::intersecting_pairs_at) on the calling thread only

@@ -40,6 +40,22 @@ pub(crate) fn boxes_within(a: &Aabb, b: &Aabb, c: f64) -> bool {
     !c2.is_finite() || s * (1.0 - 1e-9) <= c2 * (1.0 + 1e-9) + 1e-300
 }
 
+/// Whether a pair `(i, j)` at `f64` squared distance `d2` replaces `best` in the nearest-pair
+/// search: nearer, or as near with a smaller `(i, j)`. The winner among equal distances then
+/// does not depend on the order of the search (so placed and pose queries agree).
+#[inline(always)]
+pub(crate) fn improves(d2: f64, i: u32, j: u32, best: &(f64, u32, u32)) -> bool {
+    d2 < best.0 || (d2 == best.0 && (i, j) < (best.1, best.2))
+}
+
+/// Whether a pair whose squared distance is at least `lower` (up to the rounding of a box
+/// distance) can be skipped: `lower` exceeds `best` with a relative margin `1e-9`, far above
+/// the boxes' rounding, so every skipped pair is truly farther than `best`.
+#[inline(always)]
+pub(crate) fn beyond(lower: f64, best: f64) -> bool {
+    lower * (1.0 - 1e-9) > best
+}
+
 /// The corners of a triangle of a mesh as raw coordinates.
 pub(crate) type Corners = [[f64; 3]; 3];
 
@@ -60,8 +76,8 @@ fn corners_box(t: &Corners) -> Aabb {
 
 /// Branch and bound: visits node pairs nearest boxes first (best first);
 /// `pair(i, p, j, q, best)` gets triangles `i` of `ma` and `j` of `mb` with their corners and
-/// returns their squared distance (or anything `>= best` when it can tell the pair is no
-/// better). Node and triangle pairs whose box distance exceeds the best found so far (times
+/// returns their squared distance (or `+∞` when it can tell the pair is no better; ties are
+/// broken by [`improves`]). Node and triangle pairs whose box distance exceeds the best found so far (times
 /// `1 + 1e-9`, far above the boxes' rounding) are skipped, so every skipped pair is truly
 /// farther than the best `f64` value returned. Returns the best squared distance and its pair,
 /// `None` for an empty mesh.
@@ -75,7 +91,7 @@ pub(crate) fn nearest_pair(
         return None;
     }
     let mut best = (f64::INFINITY, 0u32, 0u32);
-    let prune = |d2: f64, best: f64| d2 * (1.0 - 1e-9) > best;
+    let prune = beyond;
     // Squared distances are never negative (nor NaN for finite boxes), so their bit patterns
     // order like the values: the heap compares integers.
     let key = |d2: f64| Reverse(d2.to_bits());
@@ -106,7 +122,7 @@ pub(crate) fn nearest_pair(
                         continue;
                     }
                     let d = pair(x, &p, *y, q, best.0);
-                    if d < best.0 {
+                    if improves(d, x, *y, &best) {
                         best = (d, x, *y);
                     }
                 }

@@ -1,0 +1,399 @@
+//! Clearance and distance under poses: [`Collider::pairs_within_distance_at`],
+//! [`Collider::within_distance_at`] and [`Collider::distance_at`]. The descent, the placed
+//! leaves and the rounding arguments are those of the [parent module](super) (its section
+//! "Clearance and distance").
+
+use std::cmp::Reverse;
+use std::ops::ControlFlow;
+
+use nalgebra::Isometry3;
+
+use super::{PoseError, PosedPair};
+use crate::query::clearance::{triangles_within, trivial};
+use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Open};
+use crate::query::placed_leaves::{with_scratch, Placed};
+use crate::query::pose_tree::PoseNode;
+use crate::query::proximity::{beyond, box_distance2, boxes_within, improves};
+use crate::query::Collider;
+
+type P3 = [f64; 3];
+
+/// The corners of a placed triangle as raw coordinates.
+#[inline(always)]
+fn corners(p: &Placed) -> [P3; 3] {
+    let [a, b, c] = p.tri.vertices();
+    [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
+}
+
+/// Triangle `i` of `c` placed at `pose` by the expression of
+/// [`TriMesh::transformed`](crate::TriMesh::transformed) (bit-identical to the placed mesh's).
+fn placed_corners(c: &Collider, pose: &Isometry3<f64>, i: u32) -> [P3; 3] {
+    c.mesh().triangle(i as usize).map(|v| {
+        let w = pose * v;
+        [w.x, w.y, w.z]
+    })
+}
+
+fn is_empty(c: &Collider) -> bool {
+    c.mesh().num_triangles() == 0
+}
+
+impl PosedPair<'_> {
+    /// Conservative for clearance `c ≥ 0`: `false` only if no placed triangle under `x` comes
+    /// within `c` of one under `y`. `(wa, wb)` are `c` widened for A's and B's frames.
+    #[inline(always)]
+    fn may_be_within(&self, x: &PoseNode, y: &PoseNode, (wa, wb): (f64, f64)) -> bool {
+        self.rel.may_be_within(x, y, wa) && self.inv.may_be_within(y, x, wb)
+    }
+
+    /// `c` widened for the tests in A's and in B's frame.
+    fn widened(&self, c: f64) -> (f64, f64) {
+        (self.rel.widen(c), self.inv.widen(c))
+    }
+
+    /// A lower bound on the squared distance between the placed triangles under `x` and those
+    /// under `y`: the better of the bounds in A's and in B's frame.
+    #[inline(always)]
+    fn lower_bound2(&self, x: &PoseNode, y: &PoseNode) -> f64 {
+        self.rel.gap2(x, y).max(self.inv.gap2(y, x))
+    }
+
+    /// The `f64` nearest pair `(i, j)` by best-first branch and bound under the poses, with
+    /// the pairs left open (see [`examine_pair`]). Node pairs are ordered and pruned by
+    /// [`lower_bound2`](Self::lower_bound2), triangle pairs by the distance of their exact
+    /// placed boxes, and each examined pair is handled exactly as in
+    /// [`mesh_distance`](crate::query::mesh_distance), ties included. Both meshes non-empty.
+    fn nearest(&self, open: &mut Open) -> (u32, u32) {
+        let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
+        let (na, nb) = (ta.nodes(), tb.nodes());
+        // Squared distances are never negative: their bit patterns order like the values.
+        let key = |d2: f64| Reverse(d2.to_bits());
+        with_scratch(na.len(), nb.len(), |s| {
+            let mut best = (f64::INFINITY, 0u32, 0u32);
+            s.heap.push((key(self.lower_bound2(&na[0], &nb[0])), 0, 0));
+            let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
+            while let Some((Reverse(bits), i, j)) = s.heap.pop() {
+                if beyond(f64::from_bits(bits), best.0) {
+                    break; // everything left is farther
+                }
+                let (x, y) = (&na[i as usize], &nb[j as usize]);
+                if x.is_leaf() && y.is_leaf() {
+                    let la = s.leaf(0, i, x, ta, &self.pose_a);
+                    let lb = s.leaf(1, j, y, tb, &self.pose_b);
+                    leaf_b.clear();
+                    leaf_b.extend(s.placed(lb).iter().map(|q| (q.index, corners(q), q.bounds)));
+                    for p in s.placed(la) {
+                        let pc = corners(p);
+                        for (y, q, by) in &leaf_b {
+                            if beyond(box_distance2(&p.bounds, by), best.0) {
+                                continue;
+                            }
+                            let d = examine_pair(p.index, &pc, *y, q, best.0, open);
+                            if improves(d, p.index, *y, &best) {
+                                best = (d, p.index, *y);
+                            }
+                        }
+                    }
+                    continue;
+                }
+                let split_a = !x.is_leaf() && (y.is_leaf() || x.size >= y.size);
+                let children = if split_a {
+                    [(x.start, j), (x.start + 1, j)]
+                } else {
+                    [(i, y.start), (i, y.start + 1)]
+                };
+                for (ci, cj) in children {
+                    let d = self.lower_bound2(&na[ci as usize], &nb[cj as usize]);
+                    if !beyond(d, best.0) {
+                        s.heap.push((key(d), ci, cj));
+                    }
+                }
+            }
+            (best.1, best.2)
+        })
+    }
+}
+
+/// Clearance and distance under poses: `self` at `pose_a`, `other` at `pose_b`. Each answer
+/// equals the answer of the same query on [`Collider::placed`] copies (see
+/// [`crate::query::posed`], section "Clearance and distance").
+impl Collider {
+    /// Every pair `(i, j)` (triangle `i` of `self` at `pose_a`, `j` of `other` at `pose_b`)
+    /// within distance `c` of each other, exactly (closed: distance exactly `c` counts), sorted;
+    /// the traversal is split over the cores (rayon, feature `parallel`). Equal to
+    /// `query::mesh_pairs_within_distance(&self.placed(pose_a)?, &other.placed(pose_b)?, c)`,
+    /// `c` outside `[0, ∞)` included (NaN and negative: no pair; `+∞`: every pair).
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
+    /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
+    /// let (id, moved) = (Isometry3::identity(), Isometry3::translation(1.5, 0.0, 0.0));
+    /// // A gap of exactly 0.5, without placing the cube.
+    /// assert!(cube.pairs_within_distance_at(&id, &cube, &moved, 0.4)?.is_empty());
+    /// let pairs = cube.pairs_within_distance_at(&id, &cube, &moved, 0.5)?;
+    /// assert!(!pairs.is_empty());
+    /// let placed = cube.placed(&moved).unwrap();
+    /// assert_eq!(pairs, query::mesh_pairs_within_distance(&cube, &placed, 0.5));
+    /// assert!(cube.within_distance_at(&id, &cube, &moved, 0.5)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn pairs_within_distance_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+        c: f64,
+    ) -> Result<Vec<(u32, u32)>, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        if trivial(c) == Some(false) || is_empty(self) || is_empty(other) {
+            return Ok(Vec::new());
+        }
+        let w = pair.widened(c);
+        Ok(pair.all_pairs_where(
+            |x, y| pair.may_be_within(x, y, w),
+            |p, q| {
+                boxes_within(&p.bounds, &q.bounds, c)
+                    && triangles_within(&corners(p), &corners(q), c)
+            },
+        ))
+    }
+
+    /// Whether some triangle of `self` at `pose_a` is within distance `c` of some triangle of
+    /// `other` at `pose_b`, exactly (stops at the first pair; single-threaded). Equal to
+    /// `query::meshes_within_distance(&self.placed(pose_a)?, &other.placed(pose_b)?, c)`.
+    pub fn within_distance_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+        c: f64,
+    ) -> Result<bool, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let nonempty = !is_empty(self) && !is_empty(other);
+        if let Some(answer) = trivial(c) {
+            return Ok(answer && nonempty);
+        }
+        if !nonempty {
+            return Ok(false);
+        }
+        let w = pair.widened(c);
+        Ok(pair
+            .run_where(
+                &[(0, 0)],
+                |x, y| pair.may_be_within(x, y, w),
+                |p, q| {
+                    boxes_within(&p.bounds, &q.bounds, c)
+                        && triangles_within(&corners(p), &corners(q), c)
+                },
+                |_, _| ControlFlow::Break(()),
+            )
+            .is_break())
+    }
+
+    /// The minimum distance between the surfaces of `self` at `pose_a` and `other` at
+    /// `pose_b`, with witnesses (world coordinates), the triangle pair and a certified error
+    /// bound; `None` if a mesh has no triangles. Equal to
+    /// `query::mesh_distance(&self.placed(pose_a)?, &other.placed(pose_b)?)`: the same
+    /// certified guarantee always, and the same value in every field (distance, witnesses,
+    /// pair, bound) unless rounding makes a pair's `f64` distance fall below its true distance
+    /// by more than the searches' proofs allow for (see [`crate::query::posed`], section
+    /// "Clearance and distance", for exactly what is equal).
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
+    /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
+    /// let (id, moved) = (Isometry3::identity(), Isometry3::translation(1.5, 0.25, 0.0));
+    /// let d = cube.distance_at(&id, &cube, &moved)?.unwrap();
+    /// assert!((d.distance - 0.5).abs() <= d.error_bound && d.error_bound < 1e-12);
+    /// let placed = cube.placed(&moved).unwrap();
+    /// assert_eq!(Some(d), query::mesh_distance(&cube, &placed));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn distance_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<Option<Distance>, PoseError> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        if is_empty(self) || is_empty(other) {
+            return Ok(None);
+        }
+        let mut open = Vec::new();
+        let found = pair.nearest(&mut open);
+        Ok(Some(certified_mesh_distance(
+            found,
+            &open,
+            |x| placed_corners(self, pose_a, x),
+            |y| placed_corners(other, pose_b, y),
+        )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::query::{exact_distance_triangle_triangle, mesh_distance, meshes_within_distance};
+    use crate::TriMesh;
+    use ga_core::scalar::{rational_from_f64, Rational};
+    use nalgebra::{Point3, Vector3};
+    use proptest::prelude::*;
+
+    /// The least `f64` `c` with the placed meshes within `c` (the exact distance rounded up).
+    fn threshold(a: &Collider, b: &Collider) -> f64 {
+        let d = mesh_distance(a, b).unwrap();
+        let (mut lo, mut hi) = ((d.distance - d.error_bound).max(0.0), d.distance + d.error_bound);
+        assert!(meshes_within_distance(a, b, hi));
+        if meshes_within_distance(a, b, lo) {
+            return lo;
+        }
+        // Bisection on the bit patterns (ordered like the values for non-negative floats).
+        while hi.to_bits() - lo.to_bits() > 1 {
+            let mid = f64::from_bits(lo.to_bits() + (hi.to_bits() - lo.to_bits()) / 2);
+            if meshes_within_distance(a, b, mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        hi
+    }
+
+    /// Leaf positions `[s, e)` under each node (every node covers a contiguous range).
+    fn ranges(c: &Collider) -> Vec<(usize, usize)> {
+        let nodes = c.pose_tree().nodes();
+        fn go(nodes: &[PoseNode], i: usize, out: &mut [(usize, usize)]) -> (usize, usize) {
+            let n = &nodes[i];
+            let r = if n.is_leaf() {
+                (n.start as usize, (n.start + n.count) as usize)
+            } else {
+                let (l, r) = (
+                    go(nodes, n.start as usize, out),
+                    go(nodes, n.start as usize + 1, out),
+                );
+                assert_eq!(l.1, r.0, "children cover adjacent ranges");
+                (l.0, r.1)
+            };
+            out[i] = r;
+            r
+        }
+        let mut out = vec![(0, 0); nodes.len()];
+        go(nodes, 0, &mut out);
+        out
+    }
+
+    fn soup(seed: u64, n: usize) -> TriMesh {
+        let mut rng = crate::testing::adversarial::SplitMix64(seed);
+        let mut v = Vec::new();
+        let mut t = Vec::new();
+        for k in 0..n as u32 {
+            let c = Vector3::new(rng.float(-1.0, 1.0), rng.float(-1.0, 1.0), rng.float(-1.0, 1.0));
+            for _ in 0..3 {
+                v.push(Point3::from(
+                    c + Vector3::new(rng.float(-0.3, 0.3), rng.float(-0.3, 0.3), rng.float(-0.3, 0.3)),
+                ));
+            }
+            t.push([3 * k, 3 * k + 1, 3 * k + 2]);
+        }
+        TriMesh::new(v, t).unwrap()
+    }
+
+    fn pose(t: [f64; 3], r: [f64; 3]) -> Isometry3<f64> {
+        Isometry3::new(Vector3::from(t), Vector3::from(r))
+    }
+
+    proptest! {
+        // Exact rational distances cost about 10 ms a pair: few cases.
+        #![proptest_config(ProptestConfig::with_cases(8))]
+
+        /// For every pair of nodes, the lower bound is at most the exact squared distance of
+        /// every pair of placed triangles under them, and the clearance test keeps the node
+        /// pair at that exact distance rounded up.
+        #[test]
+        fn node_bounds_hold_for_every_node_pair(
+            seed in any::<u64>(),
+            ta in prop::array::uniform3(-2.0f64..2.0), ra in prop::array::uniform3(-3.0f64..3.0),
+            tb in prop::array::uniform3(-2.0f64..2.0), rb in prop::array::uniform3(-3.0f64..3.0),
+        ) {
+            let a = Collider::new(soup(seed, 8));
+            let b = Collider::new(soup(seed ^ 0x77, 6));
+            let (pa, pb) = (pose(ta, ra), pose(tb, rb));
+            let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+            let (ka, kb) = (a.pose_tree(), b.pose_tree());
+            // Exact squared distances of the placed triangles, by leaf positions.
+            let exact: Vec<Vec<Rational>> = (0..8)
+                .map(|p| {
+                    (0..6)
+                        .map(|q| {
+                            exact_distance_triangle_triangle(
+                                &wa.triangle(ka.index(p)),
+                                &wb.triangle(kb.index(q)),
+                            )
+                            .distance2
+                        })
+                        .collect()
+                })
+                .collect();
+            // Rank the pairs by exact distance once, and round each distance up to an f64.
+            let mut order: Vec<(usize, usize)> =
+                (0..8).flat_map(|p| (0..6).map(move |q| (p, q))).collect();
+            order.sort_by(|&(p, q), &(r, s)| exact[p][q].cmp(&exact[r][s]));
+            let mut rank = vec![vec![0usize; 6]; 8];
+            for (k, &(p, q)) in order.iter().enumerate() {
+                rank[p][q] = k;
+            }
+            let up = |x: &Rational| {
+                let mut c = crate::ga_core::scalar::Real::to_f64(x).sqrt();
+                while &(rational_from_f64(c).unwrap() * rational_from_f64(c).unwrap()) < x {
+                    c = c.next_up();
+                }
+                c
+            };
+            let pair = PosedPair::new(&a, &pa, &b, &pb).unwrap();
+            let (na, nb) = (ka.nodes(), kb.nodes());
+            let (ra_, rb_) = (ranges(&a), ranges(&b));
+            for (x, &(xs, xe)) in na.iter().zip(&ra_) {
+                for (y, &(ys, ye)) in nb.iter().zip(&rb_) {
+                    let k = (xs..xe)
+                        .flat_map(|p| (ys..ye).map(move |q| (p, q)))
+                        .map(|(p, q)| rank[p][q])
+                        .min()
+                        .unwrap();
+                    let (p, q) = order[k];
+                    let lb = rational_from_f64(pair.lower_bound2(x, y)).unwrap();
+                    prop_assert!(lb <= exact[p][q]);
+                    // The nearest pair under them is within its exact distance rounded up.
+                    prop_assert!(pair.may_be_within(x, y, pair.widened(up(&exact[p][q]))));
+                }
+            }
+        }
+    }
+
+    /// Without the rounding margin the node tests are wrong: cubes facing each other far from
+    /// the origin (where placing rounds coordinates by about `1e-10`) are pruned at their exact
+    /// distance, and the lower bound exceeds it; with the margin, never.
+    #[test]
+    fn the_rounding_margin_matters() {
+        let a = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap());
+        let root = &a.pose_tree().nodes()[0];
+        let (mut pruned, mut above) = (0, 0);
+        for k in 0..48 {
+            let kf = k as f64;
+            let pa = pose([1048576.3 + 0.37 * kf, 0.1 * kf, -7.0], [0.1 * kf, 0.2, 0.3]);
+            // B beside A along A's x axis, a gap of about 0.5.
+            let pb = pa * pose([1.5 + 1e-3 * kf, 0.2, 0.1], [0.0, 0.0, 0.0]);
+            let (wa, wb) = (a.placed(&pa).unwrap(), a.placed(&pb).unwrap());
+            let c = threshold(&wa, &wb);
+            let pair = PosedPair::new(&a, &pa, &a, &pb).unwrap();
+            assert!(pair.may_be_within(root, root, pair.widened(c)));
+            assert!(pair.lower_bound2(root, root).sqrt() <= c);
+            assert!(a.within_distance_at(&pa, &a, &pb, c).unwrap());
+            let mut bare = PosedPair::new(&a, &pa, &a, &pb).unwrap();
+            bare.rel.margin = 0.0;
+            bare.inv.margin = 0.0;
+            pruned += usize::from(!bare.may_be_within(root, root, bare.widened(c)));
+            above += usize::from(bare.lower_bound2(root, root).sqrt() > c * (1.0 + 1e-12));
+        }
+        assert!(pruned > 0 && above > 0, "{pruned} {above}");
+    }
+}
