@@ -42,9 +42,12 @@ fn subdivided_cube() -> TriMesh {
 
 /// The built-in bunny scaled to a box of side 1/4 (3 674 triangles).
 fn small_bunny() -> TriMesh {
-    let s = Isometry3::identity();
     let unit = TriMesh::bunny().unit();
-    let v = unit.vertices().iter().map(|p| s * (p * 0.25)).collect();
+    let v = unit
+        .vertices()
+        .iter()
+        .map(|p| Point3::from(p.coords * 0.25))
+        .collect();
     TriMesh::new(v, unit.triangles().to_vec()).unwrap()
 }
 
@@ -117,7 +120,7 @@ proptest! {
         let a = Collider::new(small_bunny());
         let b = if itself { a.clone() } else { Collider::new(subdivided_cube()) };
         // Bring B within about 0.3 of A (the poses' translations are up to 1.5 per axis).
-        let near = Isometry3::translation(0.0, 0.0, 0.0) * Isometry3::from_parts(
+        let near = Isometry3::from_parts(
             Translation3::from(pb.translation.vector * 0.2),
             pb.rotation,
         );
@@ -137,13 +140,18 @@ fn exact_gaps_are_found_without_placing() {
     // The placed coordinates are rounded: whatever the gap is exactly, both agree on it, and
     // a half turn (exact) gives exactly 1/2: B is [1.5, 2.5] × [0, 1] × [0, 1].
     let half = Isometry3::from_parts(Translation3::new(2.5, 1.0, 0.0), lattice_rotation(3));
-    assert!(!a.pairs_within_distance_at(&id, &a, &half, 0.5).unwrap().is_empty());
+    assert!(!a
+        .pairs_within_distance_at(&id, &a, &half, 0.5)
+        .unwrap()
+        .is_empty());
     assert!(a
         .pairs_within_distance_at(&id, &a, &half, 0.5f64.next_down())
         .unwrap()
         .is_empty());
     assert!(a.within_distance_at(&id, &a, &half, 0.5).unwrap());
-    assert!(!a.within_distance_at(&id, &a, &half, 0.5f64.next_down()).unwrap());
+    assert!(!a
+        .within_distance_at(&id, &a, &half, 0.5f64.next_down())
+        .unwrap());
     let d = a.distance_at(&id, &a, &half).unwrap().unwrap();
     assert_eq!(d.distance, 0.5);
     assert!(d.error_bound < 1e-13);
@@ -160,8 +168,16 @@ fn bad_clearances_behave_like_the_placed_queries() {
     let a = Collider::new(cube([0, 0, 0], [1, 1, 1]));
     let b = Collider::new(subdivided_cube());
     let (id, pb) = (Isometry3::identity(), Isometry3::translation(3.0, 0.0, 0.0));
-    let n = (a.mesh().num_triangles() * b.mesh().num_triangles()) as usize;
-    for c in [f64::NAN, -0.0, -1.0, f64::NEG_INFINITY, f64::INFINITY, f64::MAX, 1e300] {
+    let n = a.mesh().num_triangles() * b.mesh().num_triangles();
+    for c in [
+        f64::NAN,
+        -0.0,
+        -1.0,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::MAX,
+        1e300,
+    ] {
         let pairs = check(&a, &id, &b, &pb, c).unwrap();
         let all = c >= 1e300;
         assert_eq!(pairs.len(), if all { n } else { 0 }, "{c}");
@@ -182,12 +198,7 @@ fn bad_poses_are_typed_errors() {
     let far = Isometry3::translation(0.0, 0.0, 1e300);
     for (p, want) in [
         (nan, PoseError::NonFinite),
-        (
-            skew,
-            PoseError::NotUnit {
-                norm_squared: 0.25,
-            },
-        ),
+        (skew, PoseError::NotUnit { norm_squared: 0.25 }),
         (far, PoseError::OutOfRange { magnitude: 1e300 }),
     ] {
         for (pa, pb) in [(&id, &p), (&p, &id)] {
@@ -216,5 +227,4 @@ fn ties_pick_the_smallest_pair_in_both() {
         assert!(ties.len() > 1, "{t:?}");
         assert_eq!(d.triangles, Some(ties[0]), "{t:?}");
     }
-    let _ = Point3::<f64>::origin();
 }

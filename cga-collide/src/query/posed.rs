@@ -1,6 +1,7 @@
 //! Queries under poses: a [`Collider`] built once in its own frame answers for any rigid pose
 //! (`nalgebra::Isometry3<f64>`) with no work proportional to the mesh size, and every answer is
-//! **identical** to placing the mesh first ([`Collider::placed`]) and asking the placed copy.
+//! **identical** to placing the mesh first ([`Collider::placed`]) and asking the placed copy
+//! (for [`Collider::distance_at`], see exactly what is equal in "Clearance and distance").
 //!
 //! # How
 //! * Mesh against mesh: the two hierarchies are descended together under the relative motion.
@@ -12,6 +13,9 @@
 //!   ever pruned.
 //! * Mesh against a shape: each box of the hierarchy is carried into the world by the pose,
 //!   widened the same way, and tested against the shape.
+//! * Clearance and distance: the same descent, with the relative box test widened by the
+//!   clearance, or turned into a lower bound on the distance (section "Clearance and
+//!   distance").
 //! * At the leaves, only the candidate triangles are transformed, with **the very expression
 //!   `pose * v` that [`TriMesh::transformed`](crate::TriMesh::transformed) uses**, so they are
 //!   bit-identical to the placed mesh's triangles; the placed query's exact box filter and exact
@@ -48,6 +52,53 @@
 //!   than the rounding of either side (each a sum of at most five terms of those magnitudes),
 //!   so the test in `f64` rejects a pair only when the real inequality fails: it is
 //!   conservative. The same holds with the roles of A and B exchanged.
+//!
+//! # Clearance and distance
+//! [`Collider::pairs_within_distance_at`], [`Collider::within_distance_at`] and
+//! [`Collider::distance_at`] run on the same descent, placed leaves and relative boxes; only
+//! the node test changes.
+//! * **Clearance `c`** (`0 ≤ c < ∞`; other `c` are answered as by
+//!   [`mesh_pairs_within_distance`](crate::query::mesh_pairs_within_distance) without a
+//!   descent). If placed points `x`, `y` of the two meshes have `|x - y| ≤ c`, then on axis `i`
+//!   of A's frame the two points `D x - D τ_A` and `D y - D τ_A` of the boxes above differ by
+//!   `|Dᵢ · (x - y)| ≤ |Dᵢ|₂ c`, where `Dᵢ` is row `i` of `D`. As `D = M̂_Aᵀ`,
+//!   `|Dᵢ|₂² = (D M̂_A)ᵢᵢ ≤ 1 + η_A` with `η_A` the bound on `|D M̂_A - I|` that `r_A` is built
+//!   from (it includes the rounding of the computed product). So each axis test is widened by
+//!   `w = fl(fl(c · fl(1 + η_A)) · (1 + 2⁻⁴⁸)) ≥ c (1 + η_A)(1 - u)³(1 + 32u) ≥ c √(1 + η_A)
+//!   (1 + 16u)`: the `16u c √(1 + η_A)` beyond the need pays for the rounding that the new term
+//!   adds to the sum (as the `16u` allowance does for the others), and an underflow of `w` is
+//!   paid by the margin's `2⁻¹⁰⁰⁰`. Likewise in B's frame. At the leaves, the placed triangles
+//!   (bit-identical to the placed mesh's) go through the placed query's conservative box
+//!   filter and its exact clearance test. So the pairs found are exactly the pairs within `c`,
+//!   as the placed query's are: the lists are **identical**, and so are the booleans.
+//! * **Distance.** With the same notation, on axis `i` the real gap
+//!   `gᵢ = |R̂ c_B + t̂ - c_A|ᵢ - (Σⱼ |R̂ᵢⱼ| e_Bⱼ + e_Aᵢ + r_A + r_B)`, when positive, is at most
+//!   `|Dᵢ · (x - y)|` for any placed points `x` of A's node and `y` of B's. Hence
+//!   `|D (x - y)|₂² ≥ Σᵢ max(gᵢ, 0)²`, and since `|D|₂² ≤ 1 + ‖D M̂_A - I‖₂ ≤ 1 + 3η_A`,
+//!   `|x - y|² ≥ Σᵢ max(gᵢ, 0)² (1 - 3η_A)`. The code's gap `fl(|d̂ᵢ| - ρ̂ᵢ)` (the two sides of
+//!   the overlap test, margin included) is at most `gᵢ (1 + u)` by the argument above, and
+//!   squaring, summing and the final product by `fl(1 - 4η_A - 32u)` lose less than the
+//!   spare `η_A + 32u` (relative), so the result is a lower bound on `|x - y|²`; results under
+//!   `10⁻²⁹⁰` (where rounding is absolute) count as 0. The better of the bounds in A's and in
+//!   B's frame orders a best-first search over node pairs, as
+//!   [`mesh_distance`](crate::query::mesh_distance) does with the placed boxes; triangle
+//!   pairs are examined, pruned and certified by the very code of `mesh_distance`, on the
+//!   placed triangles.
+//!
+//! **What `distance_at` has in common with `mesh_distance` on the placed copies.** Always: the
+//! same certified guarantee — the true distance of the placed meshes lies in
+//! `[distance - error_bound, distance + error_bound]`, the witnesses are the `f64` nearest
+//! points of the triangle pair reported, on the placed mesh's coordinates, and that pair's
+//! `f64` distance is `distance`. Both searches keep, among the pairs they examine, the least
+//! `f64` squared distance, and among equal ones the smallest pair `(i, j)`; both skip only
+//! pairs **proved** farther than the best so far. The error bound is a function of that pair
+//! and of the meshes alone (the lower end is decided over all pairs, see
+//! [`mesh_distance`](crate::query::mesh_distance)). So the two results are **identical in every
+//! field** unless a pair's `f64` squared distance is at or below the result while its true
+//! distance is above it (rounding of the `f64` closest-points routine, so a near-tie at the
+//! level of the last bits); only then may the two searches, which visit pairs in different
+//! orders, report different pairs of that near-tie, each with its own certified bound. No test
+//! has met such a case (the agreement tests compare every field, ties of dyadic cubes included).
 //!
 //! Poses whose quaternion is far from unit (`|q|²` outside `[1/2, 2]`), non-finite poses, and
 //! meshes or translations so large that the bounds could overflow (`|coordinate| ≥ 2⁹⁹⁰`) get a
@@ -348,7 +399,9 @@ impl Relative {
         let mut apart = false;
         for i in 0..3 {
             let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
-            let reach = ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2]
+            let reach = ar[i][0] * b.e[0]
+                + ar[i][1] * b.e[1]
+                + ar[i][2] * b.e[2]
                 + a.e[i]
                 + self.margin
                 + w;
@@ -486,12 +539,7 @@ impl<'a> PosedPair<'a> {
         start: &[(u32, u32)],
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
-        self.run_where(
-            start,
-            |x, y| self.may_overlap(x, y),
-            Self::meet,
-            visit,
-        )
+        self.run_where(start, |x, y| self.may_overlap(x, y), Self::meet, visit)
     }
 
     /// [`traverse_where`](Self::traverse_where) from the node pairs `start` with this

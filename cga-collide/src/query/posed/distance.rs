@@ -242,7 +242,10 @@ mod tests {
     /// The least `f64` `c` with the placed meshes within `c` (the exact distance rounded up).
     fn threshold(a: &Collider, b: &Collider) -> f64 {
         let d = mesh_distance(a, b).unwrap();
-        let (mut lo, mut hi) = ((d.distance - d.error_bound).max(0.0), d.distance + d.error_bound);
+        let (mut lo, mut hi) = (
+            (d.distance - d.error_bound).max(0.0),
+            d.distance + d.error_bound,
+        );
         assert!(meshes_within_distance(a, b, hi));
         if meshes_within_distance(a, b, lo) {
             return lo;
@@ -283,15 +286,21 @@ mod tests {
     }
 
     fn soup(seed: u64, n: usize) -> TriMesh {
-        let mut rng = crate::testing::adversarial::SplitMix64(seed);
+        // A small local generator (query sits below the `testing` module).
+        let mut state = seed;
+        let mut float = |lo: f64, hi: f64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+        };
         let mut v = Vec::new();
         let mut t = Vec::new();
         for k in 0..n as u32 {
-            let c = Vector3::new(rng.float(-1.0, 1.0), rng.float(-1.0, 1.0), rng.float(-1.0, 1.0));
+            let c = Vector3::new(float(-1.0, 1.0), float(-1.0, 1.0), float(-1.0, 1.0));
             for _ in 0..3 {
-                v.push(Point3::from(
-                    c + Vector3::new(rng.float(-0.3, 0.3), rng.float(-0.3, 0.3), rng.float(-0.3, 0.3)),
-                ));
+                let d = Vector3::new(float(-0.3, 0.3), float(-0.3, 0.3), float(-0.3, 0.3));
+                v.push(Point3::from(c + d));
             }
             t.push([3 * k, 3 * k + 1, 3 * k + 2]);
         }
@@ -343,7 +352,7 @@ mod tests {
                 rank[p][q] = k;
             }
             let up = |x: &Rational| {
-                let mut c = crate::ga_core::scalar::Real::to_f64(x).sqrt();
+                let mut c = ga_core::scalar::Real::to_f64(x).sqrt();
                 while &(rational_from_f64(c).unwrap() * rational_from_f64(c).unwrap()) < x {
                     c = c.next_up();
                 }
@@ -374,12 +383,16 @@ mod tests {
     /// distance, and the lower bound exceeds it; with the margin, never.
     #[test]
     fn the_rounding_margin_matters() {
-        let a = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap());
+        let a =
+            Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap());
         let root = &a.pose_tree().nodes()[0];
         let (mut pruned, mut above) = (0, 0);
         for k in 0..48 {
             let kf = k as f64;
-            let pa = pose([1048576.3 + 0.37 * kf, 0.1 * kf, -7.0], [0.1 * kf, 0.2, 0.3]);
+            let pa = pose(
+                [1048576.3 + 0.37 * kf, 0.1 * kf, -7.0],
+                [0.1 * kf, 0.2, 0.3],
+            );
             // B beside A along A's x axis, a gap of about 0.5.
             let pb = pa * pose([1.5 + 1e-3 * kf, 0.2, 0.1], [0.0, 0.0, 0.0]);
             let (wa, wb) = (a.placed(&pa).unwrap(), a.placed(&pb).unwrap());
