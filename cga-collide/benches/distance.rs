@@ -4,6 +4,9 @@
 //! figures for the same placements come from `benches/coal_distance.py` (Python), run right
 //! after.
 //!
+//! Mesh distance under poses (`Collider::distance_at`) against placing both meshes and then
+//! `query::mesh_distance` (what a user without pose queries does), on the same poses.
+//!
 //! `cargo bench -p cga-collide --bench distance -- --warm-up-time 1 --measurement-time 3`
 
 use std::hint::black_box;
@@ -75,6 +78,47 @@ fn distance(c: &mut Criterion) {
     g.finish();
 }
 
+/// Both meshes moved: A by a fixed pose, B by A's pose times each placement (so the relative
+/// placements are those of [`distance`]).
+fn distance_at_poses(c: &mut Criterion) {
+    let a = Collider::new(TriMesh::bunny00().unit());
+    let b = Collider::new(TriMesh::armadillo().unit());
+    let pa = Isometry3::new(Vector3::new(0.5, -0.2, 0.1), Vector3::new(0.2, 0.1, 0.3));
+    let mut g = c.benchmark_group("distance_at_bunny00_x_armadillo");
+    g.sample_size(10);
+    for (k, (t, r)) in PLACEMENTS.iter().enumerate() {
+        let pb = pa * Isometry3::new(Vector3::from(*t), Vector3::from(*r));
+        let at = a.distance_at(&pa, &b, &pb).unwrap();
+        let placed = query::mesh_distance(&a.placed(&pa).unwrap(), &b.placed(&pb).unwrap());
+        eprintln!(
+            "pose {k}: distance_at {:?}; identical to placing first: {}",
+            at.map(|d| (d.distance, d.error_bound, d.triangles)),
+            at == placed
+        );
+        g.bench_with_input(BenchmarkId::new("distance_at", k), &(), |bch, _| {
+            bch.iter(|| black_box(&a).distance_at(&pa, black_box(&b), &pb))
+        });
+        g.bench_with_input(
+            BenchmarkId::new("place_then_mesh_distance", k),
+            &(),
+            |bch, _| {
+                bch.iter(|| {
+                    let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+                    query::mesh_distance(black_box(&wa), black_box(&wb))
+                })
+            },
+        );
+        // Reference: the search alone, on copies placed once outside the timing.
+        let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+        g.bench_with_input(
+            BenchmarkId::new("mesh_distance_placed_once", k),
+            &(),
+            |bch, _| bch.iter(|| query::mesh_distance(black_box(&wa), black_box(&wb))),
+        );
+    }
+    g.finish();
+}
+
 fn self_intersection(c: &mut Criterion) {
     let mut g = c.benchmark_group("self_intersection");
     g.sample_size(10);
@@ -94,5 +138,5 @@ fn self_intersection(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, distance, self_intersection);
+criterion_group!(benches, distance, distance_at_poses, self_intersection);
 criterion_main!(benches);

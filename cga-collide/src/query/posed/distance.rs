@@ -70,9 +70,9 @@ impl PosedPair<'_> {
         let key = |d2: f64| Reverse(d2.to_bits());
         with_scratch(na.len(), nb.len(), |s| {
             let mut best = (f64::INFINITY, 0u32, 0u32);
-            s.heap.push((key(self.lower_bound2(&na[0], &nb[0])), 0, 0));
+            let mut next = Some((key(self.lower_bound2(&na[0], &nb[0])), 0u32, 0u32));
             let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
-            while let Some((Reverse(bits), i, j)) = s.heap.pop() {
+            while let Some((Reverse(bits), i, j)) = next.take() {
                 if beyond(f64::from_bits(bits), best.0) {
                     break; // everything left is farther
                 }
@@ -94,6 +94,7 @@ impl PosedPair<'_> {
                             }
                         }
                     }
+                    next = s.heap.pop();
                     continue;
                 }
                 let split_a = !x.is_leaf() && (y.is_leaf() || x.size >= y.size);
@@ -102,11 +103,25 @@ impl PosedPair<'_> {
                 } else {
                     [(i, y.start), (i, y.start + 1)]
                 };
+                // A child that would be popped next anyway (nearest of all) is descended at
+                // once, without a trip through the heap; the order stays best first.
                 for (ci, cj) in children {
                     let d = self.lower_bound2(&na[ci as usize], &nb[cj as usize]);
-                    if !beyond(d, best.0) {
-                        s.heap.push((key(d), ci, cj));
+                    if beyond(d, best.0) {
+                        continue;
                     }
+                    let entry = (key(d), ci, cj);
+                    match next {
+                        None if s.heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
+                        Some(n) if entry > n => {
+                            s.heap.push(n);
+                            next = Some(entry);
+                        }
+                        _ => s.heap.push(entry),
+                    }
+                }
+                if next.is_none() {
+                    next = s.heap.pop();
                 }
             }
             (best.1, best.2)
