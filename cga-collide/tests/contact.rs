@@ -328,7 +328,7 @@ fn placed_solid() -> impl Strategy<Value = Placed> {
         0usize..6,
         0usize..24,
         0u32..3,
-        proptest::array::uniform3(-2i64..=2),
+        proptest::array::uniform3(-1i64..=1),
         any::<bool>(),
     )
         .prop_map(|(kind, rot, scale, shift, inward)| place(kind, rot, scale, shift, inward))
@@ -474,7 +474,7 @@ fn placed_polycube() -> impl Strategy<Value = Cells> {
         0usize..5,
         0usize..24,
         any::<bool>(),
-        proptest::array::uniform3(-2i64..=2),
+        proptest::array::uniform3(-1i64..=1),
     )
         .prop_map(|(kind, rot, double, shift)| placed_cells(kind, rot, double, shift))
 }
