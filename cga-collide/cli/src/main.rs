@@ -99,7 +99,8 @@ struct CollideArgs {
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
-    /// Render both meshes with the intersecting triangles highlighted (PNG).
+    /// Render both meshes with the intersecting triangles highlighted and the intersection
+    /// curve drawn in black (PNG).
     #[arg(long, value_name = "OUT.png")]
     image: Option<PathBuf>,
     /// Time the query this many times and report the best.
@@ -357,12 +358,20 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     // The contact class (exact for closed meshes).
     let contact = (ca.mesh().is_closed() && cb.mesh().is_closed())
         .then(|| query::contact_class(&ca, &cb).name());
+    // The exact intersection of every intersecting triangle pair, when a file or the image
+    // needs it.
+    let contacts = if collides && (args.contacts.is_some() || args.image.is_some()) {
+        bar.set_message("intersecting");
+        query::contact_geometry(&ca, &cb)
+    } else {
+        Vec::new()
+    };
     if let Some(path) = &args.contacts {
         bar.set_message("writing contacts");
         let mut out = std::io::BufWriter::new(
             fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
         );
-        for ((i, j), g) in query::contact_geometry(&ca, &cb) {
+        for ((i, j), g) in &contacts {
             let corners: Vec<String> = g
                 .points_f64()
                 .iter()
@@ -374,8 +383,14 @@ fn collide(mut args: CollideArgs) -> Result<()> {
     }
     if let Some(path) = &args.image {
         bar.set_message("rendering");
-        render::render(ca.mesh(), cb.mesh(), &pairs, path)
-            .with_context(|| format!("cannot write image {}", path.display()))?;
+        render::render(
+            ca.mesh(),
+            cb.mesh(),
+            &pairs,
+            &render::curve_segments(contacts.iter().map(|(_, g)| g)),
+            path,
+        )
+        .with_context(|| format!("cannot write image {}", path.display()))?;
     }
     bar.finish_and_clear();
     let mode_name = match args.mode {

@@ -11,8 +11,10 @@ use core::cmp::Ordering;
 
 use nalgebra::Point3;
 
+use ga_core::scalar::{rational_from_f64, Rational, Real, Ring};
+
 use crate::exact::predicates::{Orient2d, Orient3d};
-use crate::exact::{ExactKernel, Kernel};
+use crate::exact::{rational_sign, ExactKernel, Kernel, Predicate};
 use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
@@ -48,9 +50,9 @@ where
 }
 
 /// `orient2d(a, b, p')` in the `(y, z)` projection for the perturbed point
-/// `p' = p + (0, ε, ε²)`, `ε → 0⁺` (never zero unless `a` and `b` project to one point).
-fn orient2d_perturbed(a: &Point3<f64>, b: &Point3<f64>, p: &Point3<f64>) -> Ordering {
-    let s = ExactKernel::sign::<Orient2d, 6>(&[a.y, a.z, b.y, b.z, p.y, p.z]);
+/// `p' = p + (0, ε, ε²)`, `ε → 0⁺` (never zero unless `a` and `b` project to one point), given
+/// the unperturbed sign `s`.
+fn perturbed(s: Ordering, a: &Point3<f64>, b: &Point3<f64>) -> Ordering {
     if s != Ordering::Equal {
         return s;
     }
@@ -61,23 +63,94 @@ fn orient2d_perturbed(a: &Point3<f64>, b: &Point3<f64>, p: &Point3<f64>) -> Orde
     }
 }
 
-/// Whether the ray from `p` along `+x`, perturbed symbolically (see the module docs), crosses the
-/// triangle `[a, b, c]` (which does not contain `p`).
-pub fn ray_crosses_triangle(t: &[Point3<f64>; 3], p: &Point3<f64>) -> bool {
+/// The crossing test of the perturbed ray with the triangle `t`, given the point's exact
+/// predicates: `orient2d(t[i], t[j], p)` in the `(y, z)` projection and `orient3d(a, b, c, p)`.
+fn crosses(
+    t: &[Point3<f64>; 3],
+    orient2d: impl Fn(usize, usize) -> Ordering,
+    orient3d: impl FnOnce() -> Ordering,
+) -> bool {
     let [a, b, c] = t;
     let area = ExactKernel::sign::<Orient2d, 6>(&[a.y, a.z, b.y, b.z, c.y, c.z]);
     if area == Ordering::Equal {
         return false; // zero-area projection: the perturbed ray misses it
     }
-    if orient2d_perturbed(a, b, p) != area
-        || orient2d_perturbed(b, c, p) != area
-        || orient2d_perturbed(c, a, p) != area
-    {
+    if (0..3).any(|i| {
+        let j = (i + 1) % 3;
+        perturbed(orient2d(i, j), &t[i], &t[j]) != area
+    }) {
         return false;
     }
     // In front of p: sign(x* - p_x) = -sign(orient3d(a, b, c, p)) · sign(n_x), n_x = area.
-    let o3 = ExactKernel::sign::<Orient3d, 12>(&[
-        a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, p.x, p.y, p.z,
-    ]);
+    let o3 = orient3d();
     o3 != Ordering::Equal && o3 != area
+}
+
+/// Whether the ray from `p` along `+x`, perturbed symbolically (see the module docs), crosses the
+/// triangle `[a, b, c]` (which does not contain `p`).
+pub fn ray_crosses_triangle(t: &[Point3<f64>; 3], p: &Point3<f64>) -> bool {
+    let [a, b, c] = t;
+    crosses(
+        t,
+        |i, j| {
+            let (u, v) = (t[i], t[j]);
+            ExactKernel::sign::<Orient2d, 6>(&[u.y, u.z, v.y, v.z, p.y, p.z])
+        },
+        || {
+            ExactKernel::sign::<Orient3d, 12>(&[
+                a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, p.x, p.y, p.z,
+            ])
+        },
+    )
+}
+
+/// Whether the exact point `p`, which lies on none of `triangles`, is inside the solid they
+/// bound (a closed mesh), by the parity of the same perturbed ray as [`point_in_solid`], with
+/// every sign evaluated in rationals. Triangles whose boxes the ray cannot reach are skipped
+/// by an `f64` test widened well beyond the rounding of `p`.
+pub(crate) fn exact_point_in_solid<I>(triangles: I, p: &[Rational; 3]) -> bool
+where
+    I: IntoIterator<Item = [Point3<f64>; 3]>,
+{
+    let approx = p.clone().map(|x| x.to_f64());
+    let slack = |x: f64| 1e-9 * x.abs() + 1e-300;
+    let q = |x: f64| rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero);
+    let mut odd = false;
+    for t in triangles {
+        let max = |k: usize| t.iter().map(|v| v[k]).fold(f64::NEG_INFINITY, f64::max);
+        let min = |k: usize| t.iter().map(|v| v[k]).fold(f64::INFINITY, f64::min);
+        let reachable = max(0) >= approx[0] - slack(approx[0])
+            && (1..3).all(|k| {
+                min(k) <= approx[k] + slack(approx[k]) && max(k) >= approx[k] - slack(approx[k])
+            });
+        // NaN approximations (never from a finite rational) would skip nothing.
+        if !reachable && approx.iter().all(|x| x.is_finite()) {
+            continue;
+        }
+        let v = t.map(|v| [q(v.x), q(v.y), q(v.z)]);
+        let sign = |r: Rational| rational_sign(&r);
+        odd ^= crosses(
+            &t,
+            |i, j| {
+                let (u, w) = (&v[i], &v[j]);
+                sign(Orient2d::eval(&[
+                    u[1].clone(),
+                    u[2].clone(),
+                    w[1].clone(),
+                    w[2].clone(),
+                    p[1].clone(),
+                    p[2].clone(),
+                ]))
+            },
+            || {
+                let x: [Rational; 12] = [&v[0], &v[1], &v[2], p]
+                    .map(|c| c.clone())
+                    .concat()
+                    .try_into()
+                    .unwrap_or_else(|_| core::array::from_fn(|_| <Rational as Ring>::zero()));
+                sign(Orient3d::eval(&x))
+            },
+        );
+    }
+    odd
 }

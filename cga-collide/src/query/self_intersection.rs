@@ -90,8 +90,27 @@ fn pieces(t: &[P3; 3], v: &P3) -> Vec<(Part, Segment)> {
         .collect()
 }
 
+/// The corners of `t` other than `v` (`v` again where `t` repeats it).
+fn opposite<'a>(t: &'a [P3; 3], v: &'a P3) -> [&'a P3; 2] {
+    let mut far = t.iter().filter(|x| *x != v);
+    [far.next().unwrap_or(v), far.next().unwrap_or(v)]
+}
+
+/// Whether the corners of `t` other than its vertex `v` lie strictly on one side of the
+/// plane of the non-degenerate triangle `other` (which holds `v`): then `t` meets that plane,
+/// hence `other`, only in `v`. False when `other` is degenerate (all its signs are zero).
+fn touches_plane_only_at(t: &[P3; 3], v: &P3, other: &[P3; 3]) -> bool {
+    let [x, y] = opposite(t, v).map(|p| ExactKernel::orient3d(&other[0], &other[1], &other[2], p));
+    x != Equal && x == y
+}
+
 /// Whether triangles sharing exactly the vertex `v` meet anywhere else.
 fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
+    // Most neighbours around a vertex of a surface are told apart here, with two or four
+    // exact signs.
+    if touches_plane_only_at(p, v, q) || touches_plane_only_at(q, v, p) {
+        return false;
+    }
     let (pp, pq) = (pieces(p, v), pieces(q, v));
     pp.iter().any(|(part_p, far_p)| {
         pq.iter()
@@ -120,25 +139,23 @@ fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
     }
 }
 
-fn distinct(t: &[P3; 3]) -> Vec<P3> {
-    let mut out: Vec<P3> = Vec::with_capacity(3);
-    for p in t {
-        if !out.contains(p) {
-            out.push(*p);
-        }
-    }
-    out
-}
-
 /// Whether two triangles of one mesh meet anywhere other than in what they share (see the
 /// module docs), exactly.
 pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
-    let dp = distinct(p);
-    let shared: Vec<P3> = dp.iter().filter(|x| q.contains(x)).copied().collect();
-    match shared.as_slice() {
-        [] => triangle(&p[0], &p[1], &p[2]).intersects(&triangle(&q[0], &q[1], &q[2])),
-        [v] => meet_beyond_vertex(p, q, v),
-        [u, v] => meet_beyond_edge(p, q, u, v),
+    // The distinct positions of `p` that `q` has too (no allocation: this runs for every
+    // candidate pair).
+    let mut shared = [&p[0]; 3];
+    let mut n = 0;
+    for (k, x) in p.iter().enumerate() {
+        if !p[..k].contains(x) && q.contains(x) {
+            shared[n] = x;
+            n += 1;
+        }
+    }
+    match n {
+        0 => triangle(&p[0], &p[1], &p[2]).intersects(&triangle(&q[0], &q[1], &q[2])),
+        1 => meet_beyond_vertex(p, q, shared[0]),
+        2 => meet_beyond_edge(p, q, shared[0], shared[1]),
         _ => !degenerate(p),
     }
 }
