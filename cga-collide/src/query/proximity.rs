@@ -77,9 +77,9 @@ fn corners_box(t: &Corners) -> Aabb {
 /// Branch and bound: visits node pairs nearest boxes first (best first);
 /// `pair(i, p, j, q, best)` gets triangles `i` of `ma` and `j` of `mb` with their corners and
 /// returns their squared distance (or `+∞` when it can tell the pair is no better; ties are
-/// broken by [`improves`]). Node and triangle pairs whose box distance exceeds the best found so far (times
-/// `1 + 1e-9`, far above the boxes' rounding) are skipped, so every skipped pair is truly
-/// farther than the best `f64` value returned. Returns the best squared distance and its pair,
+/// broken by [`improves`]). Node and triangle pairs whose box distance exceeds the best found
+/// so far (times `1 + 1e-9`, far above the boxes' rounding: [`beyond`]) are skipped, so every
+/// skipped pair is truly farther than the best `f64` value returned. Returns the best squared distance and its pair,
 /// `None` for an empty mesh.
 pub(crate) fn nearest_pair(
     (ma, ta): (&TriMesh, &Bvh),
