@@ -119,6 +119,57 @@ fn distance_at_poses(c: &mut Criterion) {
     g.finish();
 }
 
+/// Clearance under the same poses: every pair within `CLEARANCE` (pose 1 has some, the others
+/// none), against placing both meshes first.
+fn clearance_at_poses(c: &mut Criterion) {
+    const CLEARANCE: f64 = 0.1;
+    let a = Collider::new(TriMesh::bunny00().unit());
+    let b = Collider::new(TriMesh::armadillo().unit());
+    let pa = Isometry3::new(Vector3::new(0.5, -0.2, 0.1), Vector3::new(0.2, 0.1, 0.3));
+    let mut g = c.benchmark_group("pairs_within_distance_at_bunny00_x_armadillo");
+    g.sample_size(10);
+    for (k, (t, r)) in PLACEMENTS.iter().enumerate() {
+        let pb = pa * Isometry3::new(Vector3::from(*t), Vector3::from(*r));
+        let at = a.pairs_within_distance_at(&pa, &b, &pb, CLEARANCE).unwrap();
+        let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+        let placed = query::mesh_pairs_within_distance(&wa, &wb, CLEARANCE);
+        eprintln!(
+            "pose {k}: {} pairs within {CLEARANCE}; identical to placing first: {}",
+            at.len(),
+            at == placed
+        );
+        g.bench_with_input(
+            BenchmarkId::new("pairs_within_distance_at", k),
+            &(),
+            |bch, _| {
+                bch.iter(|| {
+                    black_box(&a).pairs_within_distance_at(&pa, black_box(&b), &pb, CLEARANCE)
+                })
+            },
+        );
+        g.bench_with_input(
+            BenchmarkId::new("place_then_mesh_pairs_within_distance", k),
+            &(),
+            |bch, _| {
+                bch.iter(|| {
+                    let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
+                    query::mesh_pairs_within_distance(black_box(&wa), black_box(&wb), CLEARANCE)
+                })
+            },
+        );
+        g.bench_with_input(
+            BenchmarkId::new("mesh_pairs_within_distance_placed_once", k),
+            &(),
+            |bch, _| {
+                bch.iter(|| {
+                    query::mesh_pairs_within_distance(black_box(&wa), black_box(&wb), CLEARANCE)
+                })
+            },
+        );
+    }
+    g.finish();
+}
+
 fn self_intersection(c: &mut Criterion) {
     let mut g = c.benchmark_group("self_intersection");
     g.sample_size(10);
@@ -138,5 +189,11 @@ fn self_intersection(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, distance, distance_at_poses, self_intersection);
+criterion_group!(
+    benches,
+    distance,
+    distance_at_poses,
+    clearance_at_poses,
+    self_intersection
+);
 criterion_main!(benches);
