@@ -22,8 +22,8 @@
 //!   test then decide, on the same numbers. The vertices are read from a copy in leaf order
 //!   (contiguous), and each leaf is placed at most once per traversal, in scratch memory each
 //!   thread keeps from one query to the next (no allocation per pose once it has grown; 8 bytes
-//!   per node of the largest trees the thread has met, and 128 per triangle placed in its
-//!   largest traversal).
+//!   per node of the largest trees the thread has met, 128 per triangle placed in its largest
+//!   traversal, and 16 per node pair queued by its largest distance search).
 //!
 //! # The rounding bound
 //! nalgebra evaluates `pose * v` for the unit quaternion `q = (w, u)` and translation `τ` as
