@@ -8,7 +8,10 @@ vertices with identity poses).
 average (criterion's figures for `cga` are means). Not part of CI. Needs `pip install coal
 numpy`. From the repository root:
 
-    python3 cga-collide/benches/coal_distance.py [--repeat N]
+    python3 cga-collide/benches/coal_distance.py [--repeat N] [--posed]
+
+With `--posed`, B's model is built once in its own frame and each placement is passed to coal
+as a transform (coal's usual way, and the counterpart of `Collider::distance_at`).
 
 The rotation is nalgebra's `Isometry3::new(t, axis_angle)` (scaled axis), rebuilt here with
 Rodrigues' formula; tiny differences in the rotated coordinates (last bits) can change the
@@ -48,21 +51,28 @@ def rotation(axis_angle):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeat", type=int, default=20)
+    ap.add_argument("--posed", action="store_true")
     args = ap.parse_args()
     va, ta = read_off("cga-collide/data/bunny00.off.gz")
     vb0, tb = read_off("cga-collide/data/armadillo.off.gz")
     ma = model(unit(va), ta)
     identity = coal.Transform3s()
     out = []
+    local_b = model(unit(vb0), tb) if args.posed else None
     for t, r in PLACEMENTS:
-        vb = unit(vb0) @ rotation(r).T + np.array(t)
-        mb = model(vb, tb)
+        if args.posed:
+            mb = local_b
+            pose_b = coal.Transform3s(rotation(r), np.array(t, dtype=np.float64))
+        else:
+            vb = unit(vb0) @ rotation(r).T + np.array(t)
+            mb = model(vb, tb)
+            pose_b = identity
         times, dist = [], None
         for _ in range(args.repeat):
             req = coal.DistanceRequest()
             res = coal.DistanceResult()
             t0 = time.perf_counter()
-            coal.distance(ma, identity, mb, identity, req, res)
+            coal.distance(ma, identity, mb, pose_b, req, res)
             times.append(time.perf_counter() - t0)
             dist = res.min_distance
         times.sort()
@@ -74,7 +84,8 @@ def main():
             "median_millis": times[len(times) // 2] * 1e3,
             "mean_millis": sum(times) / len(times) * 1e3,
         })
-    print(json.dumps({"library": "coal " + getattr(coal, "__version__", "?"), "placements": out}, indent=2))
+    print(json.dumps({"library": "coal " + getattr(coal, "__version__", "?"), "posed": args.posed,
+                      "placements": out}, indent=2))
 
 
 if __name__ == "__main__":
