@@ -11,28 +11,9 @@ use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Segment, Sphere};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use nalgebra::{Isometry3, Point3};
-use parry3d_f64::query::intersection_test;
-use parry3d_f64::query::visitors::BoundingVolumeIntersectionsSimultaneousVisitor;
-use parry3d_f64::shape::TriMesh as ParryMesh;
 
-/// parry3d's way: both meshes in their own frame, boxes of B transformed into A's frame during
-/// the simultaneous traversal, GJK triangle–triangle tests (`f64`, not exact).
-fn parry_pairs(a: &ParryMesh, b: &ParryMesh, pos12: &Isometry3<f64>, first_only: bool) -> usize {
-    let mut n = 0;
-    let id = Isometry3::identity();
-    let mut visitor = BoundingVolumeIntersectionsSimultaneousVisitor::with_relative_pos(
-        *pos12,
-        |i: &u32, j: &u32| {
-            if intersection_test(&id, &a.triangle(*i), pos12, &b.triangle(*j)).unwrap_or(false) {
-                n += 1;
-                return !first_only;
-            }
-            true
-        },
-    );
-    a.qbvh().traverse_bvtt(b.qbvh(), &mut visitor);
-    n
-}
+mod common;
+use common::{parry_collides, parry_mesh, parry_pairs, parry_pose};
 
 /// bunny00 × armadillo, both `--unit`, armadillo translated by (0.3, 0.05, 0).
 fn placement() -> (Collider, Collider) {
@@ -79,17 +60,20 @@ fn mesh_mesh(c: &mut Criterion) {
         a.intersecting_pairs(&b, Mode::Bvh).len(),
         a.box_pairs_bvh(&b).len()
     );
-    let pa = ParryMesh::new(a.mesh().vertices().to_vec(), a.mesh().triangles().to_vec()).unwrap();
-    let arm = TriMesh::armadillo().unit();
-    let pb = ParryMesh::new(arm.vertices().to_vec(), arm.triangles().to_vec()).unwrap();
-    let pos12 = Isometry3::translation(0.3, 0.05, 0.0);
-    eprintln!("parry3d pairs: {}", parry_pairs(&pa, &pb, &pos12, false));
+    // parry3d (latest release) the way its users call it: both meshes in their own frame,
+    // B's pose relative to A.
+    let (pa, pb) = (
+        parry_mesh(a.mesh()),
+        parry_mesh(&TriMesh::armadillo().unit()),
+    );
+    let pos12 = parry_pose(&Isometry3::translation(0.3, 0.05, 0.0));
+    eprintln!("parry3d pairs: {}", parry_pairs(&pa, &pb, &pos12));
     let mut g = c.benchmark_group("bunny00_x_armadillo");
     g.bench_function("parry3d_all_pairs", |bch| {
-        bch.iter(|| parry_pairs(&pa, &pb, &pos12, false))
+        bch.iter(|| parry_pairs(&pa, &pb, &pos12))
     });
     g.bench_function("parry3d_first_hit", |bch| {
-        bch.iter(|| parry_pairs(&pa, &pb, &pos12, true))
+        bch.iter(|| parry_collides(&pa, &pb, &pos12))
     });
     g.sample_size(10);
     g.bench_function("all_pairs_bvh_sah", |bch| {

@@ -27,11 +27,9 @@ use cga_collide::query::{Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
-use parry3d_latest::bounding_volume::BoundingVolume;
-use parry3d_latest::math::{Pose, Vector};
-use parry3d_latest::partitioning::BvhNode;
-use parry3d_latest::query::intersection_test;
-use parry3d_latest::shape::TriMesh as ParryMesh;
+
+mod common;
+use common::{parry_collides, parry_mesh, parry_pairs, parry_pose};
 
 /// Rotation about x, then y, then z (degrees), then translation: the CLI's `--rotate`,
 /// `--translate` and `--poses` formula.
@@ -52,39 +50,6 @@ fn poses() -> Vec<Isometry3<f64>> {
             placement([v[0], v[1], v[2]], [v[3], v[4], v[5]])
         })
         .collect()
-}
-
-fn parry_mesh(m: &TriMesh) -> ParryMesh {
-    let v = m
-        .vertices()
-        .iter()
-        .map(|p| Vector::new(p.x, p.y, p.z))
-        .collect();
-    ParryMesh::new(v, m.triangles().to_vec()).unwrap()
-}
-
-fn parry_pose(iso: &Isometry3<f64>) -> Pose {
-    let q = iso.rotation.quaternion();
-    let t = iso.translation.vector;
-    Pose::from_parts(
-        Vector::new(t.x, t.y, t.z),
-        parry3d_latest::glamx::DQuat::from_xyzw(q.i, q.j, q.k, q.w),
-    )
-}
-
-/// parry's all pairs at a pose: simultaneous traversal with B's boxes moved into A's frame,
-/// then its triangle–triangle intersection test.
-fn parry_pairs(a: &ParryMesh, b: &ParryMesh, pos12: &Pose) -> usize {
-    a.bvh()
-        .leaf_pairs(b.bvh(), |n1: &BvhNode, n2: &BvhNode| {
-            n1.aabb().intersects(&n2.aabb().transform_by(pos12))
-        })
-        .filter(|&(i, j)| {
-            intersection_test(&Pose::IDENTITY, &a.triangle(i), pos12, &b.triangle(j))
-                .map(|r| r.intersecting)
-                .unwrap_or(false)
-        })
-        .count()
 }
 
 fn pool(n: usize) -> rayon::ThreadPool {
@@ -127,15 +92,10 @@ fn per_pose(c: &mut Criterion) {
         })
     });
     g.bench_function("parry_latest_first_hit", |bch| {
-        let ida = Pose::IDENTITY;
         bch.iter(|| {
             poses
                 .iter()
-                .filter(|p| {
-                    intersection_test(&ida, &pa, &parry_pose(black_box(p)), &pb)
-                        .unwrap()
-                        .intersecting
-                })
+                .filter(|p| parry_collides(&pa, &pb, &parry_pose(black_box(p))))
                 .count()
         })
     });
