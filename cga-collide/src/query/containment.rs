@@ -143,11 +143,8 @@ where
                 ]))
             },
             || {
-                let x: [Rational; 12] = [&v[0], &v[1], &v[2], p]
-                    .map(|c| c.clone())
-                    .concat()
-                    .try_into()
-                    .unwrap_or_else(|_| core::array::from_fn(|_| <Rational as Ring>::zero()));
+                let points = [&v[0], &v[1], &v[2], p];
+                let x: [Rational; 12] = core::array::from_fn(|k| points[k / 3][k % 3].clone());
                 sign(Orient3d::eval(&x))
             },
         );

@@ -974,7 +974,16 @@ mod tests {
         Ok(want.len())
     }
 
-    fn soup(seed: u64, n: usize, spread: f64) -> crate::TriMesh {
+    /// `n` random triangles: centres in `[-spread, spread]³`, corners within `jitter` of them
+    /// per coordinate; with `degenerate`, every 5th has a repeated corner. Also used by the
+    /// tests of [`super::distance`].
+    pub(super) fn soup(
+        seed: u64,
+        n: usize,
+        spread: f64,
+        jitter: f64,
+        degenerate: bool,
+    ) -> crate::TriMesh {
         // A small local generator (query sits above the `testing` module).
         let mut state = seed;
         let mut float = |lo: f64, hi: f64| {
@@ -993,11 +1002,14 @@ mod tests {
             );
             for _ in 0..3 {
                 v.push(Point3::from(
-                    c + Vector3::new(float(-0.5, 0.5), float(-0.5, 0.5), float(-0.5, 0.5)),
+                    c + Vector3::new(
+                        float(-jitter, jitter),
+                        float(-jitter, jitter),
+                        float(-jitter, jitter),
+                    ),
                 ));
             }
-            // Every 5th triangle degenerate (a repeated corner).
-            t.push(if k % 5 == 0 {
+            t.push(if degenerate && k % 5 == 0 {
                 [3 * k, 3 * k + 1, 3 * k + 1]
             } else {
                 [3 * k, 3 * k + 1, 3 * k + 2]
@@ -1029,8 +1041,8 @@ mod tests {
             ra in prop::array::uniform3(-4.0f64..4.0), ta in prop::array::uniform3(-1.0f64..1.0),
             rb in prop::array::uniform3(-4.0f64..4.0), tb in prop::array::uniform3(-1.0f64..1.0),
         ) {
-            let a = Collider::new(soup(seed, 60, 1.0));
-            let b = Collider::new(soup(seed ^ 0x5555, 40, 1.0));
+            let a = Collider::new(soup(seed, 60, 1.0, 0.5, true));
+            let b = Collider::new(soup(seed ^ 0x5555, 40, 1.0, 0.5, true));
             box_test_keeps_meeting_pairs(&a, &pose(ra, ta), &b, &pose(rb, tb))?;
         }
 

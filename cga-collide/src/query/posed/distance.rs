@@ -301,25 +301,7 @@ mod tests {
     }
 
     fn soup(seed: u64, n: usize) -> TriMesh {
-        // A small local generator (query sits below the `testing` module).
-        let mut state = seed;
-        let mut float = |lo: f64, hi: f64| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
-        let mut v = Vec::new();
-        let mut t = Vec::new();
-        for k in 0..n as u32 {
-            let c = Vector3::new(float(-1.0, 1.0), float(-1.0, 1.0), float(-1.0, 1.0));
-            for _ in 0..3 {
-                let d = Vector3::new(float(-0.3, 0.3), float(-0.3, 0.3), float(-0.3, 0.3));
-                v.push(Point3::from(c + d));
-            }
-            t.push([3 * k, 3 * k + 1, 3 * k + 2]);
-        }
-        TriMesh::new(v, t).unwrap()
+        super::super::tests::soup(seed, n, 1.0, 0.3, false)
     }
 
     fn pose(t: [f64; 3], r: [f64; 3]) -> Isometry3<f64> {
