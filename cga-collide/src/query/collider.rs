@@ -157,7 +157,7 @@ impl Collider {
         let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
         let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
-        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i));
+        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i), extent);
         Collider {
             mesh,
             bvh,
@@ -176,7 +176,7 @@ impl Collider {
         bvh.refit(mesh.vertices(), mesh.triangles());
         let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
-        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i));
+        let pose_tree = PoseTree::new(&bvh, |i| mesh.triangle(i), extent);
         Ok(Collider {
             mesh,
             bvh,

@@ -816,10 +816,11 @@ pub(crate) fn certified_mesh_distance(
 /// [`Collider::placed`]), with witnesses, the triangle pair `(i, j)` attaining it and a
 /// certified error bound; `None` if a mesh has no triangles.
 ///
-/// The `f64` search is best-first branch and bound on the hierarchies, pruning node and
-/// triangle pairs whose box distance exceeds the best so far, and pairs proved farther by a
-/// separation bound. Among pairs with the same `f64` squared distance, the smallest `(i, j)`
-/// is kept.
+/// The `f64` search is best-first branch and bound on the hierarchies: node pairs are ordered
+/// and pruned by a proved lower bound from boxes fitted to the geometry (principal axes, or the
+/// coordinate axes when those fit better) and the axis-aligned boxes; triangle pairs by their
+/// box distance and by separation bounds. Among pairs with the same `f64` squared distance, the
+/// smallest `(i, j)` is kept.
 ///
 /// The bound is proved over **all** triangle pairs, so it holds for the meshes' true distance
 /// even when several pairs nearly tie. The upper end: the exact clearance test of the pair
@@ -838,11 +839,9 @@ pub(crate) fn certified_mesh_distance(
 /// ```
 pub fn mesh_distance(a: &Collider, b: &Collider) -> Option<Distance> {
     let mut open = Vec::new();
-    let (_, i, j) = nearest_pair(
-        (a.mesh(), a.bvh()),
-        (b.mesh(), b.bvh()),
-        |x, p, y, q, best| examine_pair(x, p, y, q, best, &mut open),
-    )?;
+    let (_, i, j) = nearest_pair(a, b, |x, p, y, q, best| {
+        examine_pair(x, p, y, q, best, &mut open)
+    })?;
     Some(certified_mesh_distance(
         (i, j),
         &open,

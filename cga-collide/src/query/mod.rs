@@ -26,6 +26,7 @@ mod containment;
 pub mod convex;
 pub mod distance;
 mod intersects;
+mod oriented_boxes;
 mod proximity;
 pub mod self_intersection;
 

@@ -4,8 +4,12 @@
 //! that placing the triangles of a leaf reads one contiguous block instead of an index and
 //! three scattered vertices per triangle.
 //!
-//! Built once with the collider (about 30 bytes a triangle for the nodes, 72 for the vertices);
-//! the pose queries of [`crate::query::posed`] read nothing else of the mesh.
+//! Each node also has an [`OrientedBox`] fitted to its vertices, read only by the distance
+//! searches.
+//!
+//! Built once with the collider (about 30 bytes a triangle for the nodes, 64 for the oriented
+//! boxes, 72 for the vertices); the pose queries of [`crate::query::posed`] read nothing else
+//! of the mesh.
 //!
 //! # Conservativeness
 //! A node's real box `[c - e, c + e]` (per coordinate) contains the exact box `[min, max]` of
@@ -15,15 +19,12 @@
 //! real `max - c` and `c - min` (each subtraction errs by at most a factor `1 + u`, the product
 //! by `1 - u`, and an underflow by less than `2⁻¹⁰⁰⁰`). So `|c| ≤ ρ` and `e ≤ 2ρ(1 + 10u) +
 //! 2⁻¹⁰⁰⁰` when every vertex coordinate is at most `ρ` in magnitude.
+//!
 
 use nalgebra::Point3;
 
 use crate::bvh::{Aabb, Bvh};
-
-/// `2^-53`, the unit roundoff.
-const U: f64 = f64::EPSILON / 2.0;
-/// Absolute allowance for underflow.
-const TINY: f64 = 9.332636185032189e-302; // 2^-1000
+use crate::query::oriented_boxes::{centre_half, fit, OrientedBox};
 
 /// A node of the hierarchy for queries under poses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,9 +56,7 @@ fn centre_extent(b: &Aabb) -> ([f64; 3], [f64; 3]) {
     let mut c = [0.0; 3];
     let mut e = [0.0; 3];
     for k in 0..3 {
-        c[k] = (b.min[k] + b.max[k]) * 0.5;
-        let m = (b.max[k] - c[k]).max(c[k] - b.min[k]);
-        e[k] = m * (1.0 + 8.0 * U) + TINY;
+        (c[k], e[k]) = centre_half(b.min[k], b.max[k]);
     }
     (c, e)
 }
@@ -70,11 +69,16 @@ pub(crate) struct PoseTree {
     order: Vec<u32>,
     /// The vertices of the triangles, in leaf order.
     vertices: Vec<[Point3<f64>; 3]>,
+    /// The nodes' oriented boxes (same indices as `nodes`).
+    frames: Vec<OrientedBox>,
+    /// Bound on every entry of `F Fᵀ - I` over the oriented boxes' axes `F`.
+    frame_eta: f64,
 }
 
 impl PoseTree {
-    /// The layout of `bvh`, built over the triangles `triangle(i)`.
-    pub fn new(bvh: &Bvh, triangle: impl Fn(usize) -> [Point3<f64>; 3]) -> PoseTree {
+    /// The layout of `bvh`, built over the triangles `triangle(i)`, whose coordinates are at
+    /// most `rho` in magnitude.
+    pub fn new(bvh: &Bvh, triangle: impl Fn(usize) -> [Point3<f64>; 3], rho: f64) -> PoseTree {
         let nodes = bvh
             .nodes()
             .iter()
@@ -90,12 +94,27 @@ impl PoseTree {
             })
             .collect();
         let order = bvh.order().to_vec();
-        let vertices = order.iter().map(|&t| triangle(t as usize)).collect();
+        let vertices: Vec<_> = order.iter().map(|&t| triangle(t as usize)).collect();
+        let (frames, frame_eta) = fit(bvh, &vertices, rho);
         PoseTree {
             nodes,
             order,
             vertices,
+            frames,
+            frame_eta,
         }
+    }
+
+    /// The nodes' oriented boxes (indexed like [`nodes`](Self::nodes)).
+    #[inline(always)]
+    pub fn frames(&self) -> &[OrientedBox] {
+        &self.frames
+    }
+
+    /// Bound on every entry of `F Fᵀ - I` for the axes `F` of every oriented box.
+    #[inline(always)]
+    pub fn frame_eta(&self) -> f64 {
+        self.frame_eta
     }
 
     /// The nodes (root first).

@@ -71,19 +71,16 @@
 //!   (bit-identical to the placed mesh's) go through the placed query's conservative box
 //!   filter and its exact clearance test. So the pairs found are exactly the pairs within `c`,
 //!   as the placed query's are: the lists are **identical**, and so are the booleans.
-//! * **Distance.** With the same notation, on axis `i` the real gap
-//!   `gᵢ = |R̂ c_B + t̂ - c_A|ᵢ - (Σⱼ |R̂ᵢⱼ| e_Bⱼ + e_Aᵢ + r_A + r_B)`, when positive, is at most
-//!   `|Dᵢ · (x - y)|` for any placed points `x` of A's node and `y` of B's. Hence
-//!   `|D (x - y)|₂² ≥ Σᵢ max(gᵢ, 0)²`, and since `|D|₂² ≤ 1 + ‖D M̂_A - I‖₂ ≤ 1 + 3η_A`,
-//!   `|x - y|² ≥ Σᵢ max(gᵢ, 0)² (1 - 3η_A)`. The code's gap `fl(|d̂ᵢ| - ρ̂ᵢ)` (the two sides of
-//!   the overlap test, margin included) is at most `gᵢ (1 + u)` by the argument above, and
-//!   squaring, summing and the final product by `fl(1 - 4η_A - 32u)` lose less than the
-//!   spare `η_A + 32u` (relative), so the result is a lower bound on `|x - y|²`; results under
-//!   `10⁻²⁹⁰` (where rounding is absolute) count as 0. The better of the bounds in A's and in
-//!   B's frame orders a best-first search over node pairs, as
-//!   [`mesh_distance`](crate::query::mesh_distance) does with the placed boxes; triangle
-//!   pairs are examined, pruned and certified by the very code of `mesh_distance`, on the
-//!   placed triangles.
+//! * **Distance.** With the same notation, a placed point of A's node lies within `r_A` (per
+//!   coordinate of A's frame `D (x - τ_A)`) of any convex set holding the node's local
+//!   triangles, and a placed point of B's node within `r_B` of `R̂` times such a set plus `t̂`.
+//!   The sets used are the nodes' oriented boxes (fitted to the geometry, so that turned parts
+//!   keep tight bounds), and the lower bound on `|x - y|²` from their gaps on the six box axes,
+//!   every rounding paid, is proved in the module `oriented_boxes` (crate-private; its docs
+//!   are in the source). It orders a best-first search over node pairs, as
+//!   [`mesh_distance`](crate::query::mesh_distance) does with the same boxes in one frame;
+//!   triangle pairs are examined, pruned and certified by the very code of `mesh_distance`, on
+//!   the placed triangles.
 //!
 //! **What `distance_at` has in common with `mesh_distance` on the placed copies.** Always: the
 //! same certified guarantee — the true distance of the placed meshes lies in
@@ -409,34 +406,7 @@ impl Relative {
         }
         !apart
     }
-
-    /// A lower bound on the squared distance between any placed triangle under node `a` of A
-    /// and any under node `b` of B (module docs, distance): the axis gaps of
-    /// [`may_overlap`](Self::may_overlap), squared and summed, shrunk by `1 - 4η - 32u`;
-    /// 0 when that is not far above the subnormal range.
-    #[inline(always)]
-    fn gap2(&self, a: &PoseNode, b: &PoseNode) -> f64 {
-        let (r, ar) = (&self.r, &self.abs_r);
-        let mut s = 0.0;
-        for i in 0..3 {
-            let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
-            let reach =
-                ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2] + a.e[i] + self.margin;
-            let g = (d.abs() - reach).max(0.0);
-            s += g * g;
-        }
-        let lb = s * (1.0 - 4.0 * self.eta - 32.0 * U);
-        if lb >= NORMAL {
-            lb
-        } else {
-            0.0
-        }
-    }
 }
-
-/// Lower bounds below this are dropped: far above the subnormal range, where rounding is
-/// absolute rather than relative.
-const NORMAL: f64 = 1.0e-290;
 
 /// Two colliders under their poses, ready to be traversed together.
 struct PosedPair<'a> {

@@ -1,13 +1,15 @@
 //! Descending two box hierarchies together by distance: the box bounds behind mesh clearance
 //! and the best-first search behind mesh distance. The pair enumerations themselves (within a
-//! distance, or one mesh against itself) are [`Bvh`]'s. Only the public shape of [`Bvh`] (nodes
-//! and leaf order) is used here; triangle corners are read from the mesh.
+//! distance, or one mesh against itself) are [`Bvh`](crate::bvh::Bvh)'s. The search reads the
+//! colliders' pose layout (nodes, oriented boxes, vertices in leaf order).
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use crate::bvh::{Aabb, Bvh, MAX_LEAF};
-use crate::shape::mesh::TriMesh;
+use crate::bvh::{Aabb, MAX_LEAF};
+use crate::query::oriented_boxes::OrientedGaps;
+use crate::query::pose_tree::PoseTree;
+use crate::query::Collider;
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true
 /// value by more than a few ulps (only used to order and prune the distance search, whose
@@ -59,10 +61,10 @@ pub(crate) fn beyond(lower: f64, best: f64) -> bool {
 /// The corners of a triangle of a mesh as raw coordinates.
 pub(crate) type Corners = [[f64; 3]; 3];
 
-/// The corners of triangle `t` of `mesh`.
+/// The corners of the triangle at leaf position `k` of `tree`.
 #[inline]
-fn corners(mesh: &TriMesh, t: u32) -> Corners {
-    mesh.triangle(t as usize).map(|p| [p.x, p.y, p.z])
+fn corners(tree: &PoseTree, k: usize) -> Corners {
+    tree.vertices(k).map(|p| [p.x, p.y, p.z])
 }
 
 /// The box of a triangle's corners (exact `min`/`max`).
@@ -74,72 +76,89 @@ fn corners_box(t: &Corners) -> Aabb {
     }
 }
 
-/// Branch and bound: visits node pairs nearest boxes first (best first);
-/// `pair(i, p, j, q, best)` gets triangles `i` of `ma` and `j` of `mb` with their corners and
-/// returns their squared distance (or `+∞` when it can tell the pair is no better; ties are
-/// broken by [`improves`]). Node and triangle pairs whose box distance exceeds the best found
-/// so far (times `1 + 1e-9`, far above the boxes' rounding: [`beyond`]) are skipped, so every
-/// skipped pair is truly farther than the best `f64` value returned. Returns the best squared distance and its pair,
-/// `None` for an empty mesh.
+/// Branch and bound: visits node pairs nearest first (best first) by the lower bound of their
+/// [oriented boxes](crate::query::oriented_boxes); `pair(i, p, j, q, best)` gets triangles
+/// `i` of `a` and `j` of `b` with their corners and returns their squared distance (or `+∞`
+/// when it can tell the pair is no better; ties are broken by [`improves`]). Node pairs whose
+/// bound, and triangle pairs whose box distance, exceeds the best found so far (times
+/// `1 + 1e-9`, far above the boxes' rounding: [`beyond`]) are skipped, so every skipped pair is
+/// truly farther than the best `f64` value returned. Returns the best squared distance and its
+/// pair, `None` for an empty mesh.
 pub(crate) fn nearest_pair(
-    (ma, ta): (&TriMesh, &Bvh),
-    (mb, tb): (&TriMesh, &Bvh),
+    a: &Collider,
+    b: &Collider,
     mut pair: impl FnMut(u32, &Corners, u32, &Corners, f64) -> f64,
 ) -> Option<(f64, u32, u32)> {
-    let (na, nb) = (ta.nodes(), tb.nodes());
-    if ma.num_triangles() == 0 || mb.num_triangles() == 0 {
+    if a.mesh().num_triangles() == 0 || b.mesh().num_triangles() == 0 {
         return None;
     }
+    let (ta, tb) = (a.pose_tree(), b.pose_tree());
+    let (na, nb) = (ta.nodes(), tb.nodes());
+    let (fa, fb) = (ta.frames(), tb.frames());
+    let (boxes_a, boxes_b) = (a.bvh().nodes(), b.bvh().nodes());
+    let gaps =
+        OrientedGaps::same_frame((a.extent(), b.extent()), ta.frame_eta().max(tb.frame_eta()));
+    // The axis-aligned boxes' bound is cheap: the oriented one is only computed when that
+    // does not already prune the pair.
+    let bound = |i: u32, j: u32, best: f64| {
+        let (i, j) = (i as usize, j as usize);
+        let d = box_distance2(&boxes_a[i].bounds, &boxes_b[j].bounds);
+        if beyond(d, best) {
+            d
+        } else {
+            d.max(gaps.gap2_beyond(&fa[i], &fb[j], best))
+        }
+    };
     let mut best = (f64::INFINITY, 0u32, 0u32);
     let prune = beyond;
     // Squared distances are never negative (nor NaN for finite boxes), so their bit patterns
     // order like the values: the heap compares integers.
     let key = |d2: f64| Reverse(d2.to_bits());
     let mut heap = BinaryHeap::with_capacity(256);
-    heap.push((key(box_distance2(&na[0].bounds, &nb[0].bounds)), 0u32, 0u32));
+    let mut next = Some((key(bound(0, 0, f64::INFINITY)), 0u32, 0u32));
     let mut leaf_b: Vec<(u32, Corners, Aabb)> = Vec::with_capacity(MAX_LEAF);
-    let mut next = heap.pop();
     while let Some((Reverse(bits), i, j)) = next.take() {
         if prune(f64::from_bits(bits), best.0) {
             break; // everything left is farther
         }
-        let (a, b) = (&na[i as usize], &nb[j as usize]);
-        if a.is_leaf() && b.is_leaf() {
-            let (sa, sb) = (a.start as usize, b.start as usize);
+        let (x, y) = (&na[i as usize], &nb[j as usize]);
+        if x.is_leaf() && y.is_leaf() {
+            let (sa, sb) = (x.start as usize, y.start as usize);
             leaf_b.clear();
-            leaf_b.extend(tb.order()[sb..sb + b.count as usize].iter().map(|&y| {
-                let q = corners(mb, y);
-                (y, q, corners_box(&q))
+            leaf_b.extend((sb..sb + y.count as usize).map(|k| {
+                let q = corners(tb, k);
+                (tb.index(k), q, corners_box(&q))
             }));
-            for &x in &ta.order()[sa..sa + a.count as usize] {
-                let p = corners(ma, x);
+            for k in sa..sa + x.count as usize {
+                let p = corners(ta, k);
                 let bx = corners_box(&p);
-                if prune(box_distance2(&bx, &b.bounds), best.0) {
+                if prune(box_distance2(&bx, &boxes_b[j as usize].bounds), best.0) {
                     continue;
                 }
-                for (y, q, by) in &leaf_b {
+                let xi = ta.index(k);
+                for (yi, q, by) in &leaf_b {
                     if prune(box_distance2(&bx, by), best.0) {
                         continue;
                     }
-                    let d = pair(x, &p, *y, q, best.0);
-                    if improves(d, x, *y, &best) {
-                        best = (d, x, *y);
+                    let d = pair(xi, &p, *yi, q, best.0);
+                    if improves(d, xi, *yi, &best) {
+                        best = (d, xi, *yi);
                     }
                 }
             }
             next = heap.pop();
             continue;
         }
-        let split_a = !a.is_leaf() && (b.is_leaf() || a.bounds.half_area() >= b.bounds.half_area());
+        let split_a = !x.is_leaf() && (y.is_leaf() || x.size >= y.size);
         let children = if split_a {
-            [(a.start, j), (a.start + 1, j)]
+            [(x.start, j), (x.start + 1, j)]
         } else {
-            [(i, b.start), (i, b.start + 1)]
+            [(i, y.start), (i, y.start + 1)]
         };
         // A child that would be popped next anyway (nearest of all) is descended at once,
         // without a trip through the heap; the order stays best first.
         for (ci, cj) in children {
-            let d = box_distance2(&na[ci as usize].bounds, &nb[cj as usize].bounds);
+            let d = bound(ci, cj, best.0);
             if prune(d, best.0) {
                 continue;
             }

@@ -11,6 +11,7 @@ use nalgebra::Isometry3;
 use super::{PoseError, PosedPair};
 use crate::query::clearance::{triangles_within, trivial};
 use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Open};
+use crate::query::oriented_boxes::OrientedGaps;
 use crate::query::placed_leaves::{with_scratch, Placed};
 use crate::query::pose_tree::PoseNode;
 use crate::query::proximity::{beyond, box_distance2, boxes_within, improves};
@@ -51,26 +52,38 @@ impl PosedPair<'_> {
         (self.rel.widen(c), self.inv.widen(c))
     }
 
-    /// A lower bound on the squared distance between the placed triangles under `x` and those
-    /// under `y`: the better of the bounds in A's and in B's frame.
-    #[inline(always)]
-    fn lower_bound2(&self, x: &PoseNode, y: &PoseNode) -> f64 {
-        self.rel.gap2(x, y).max(self.inv.gap2(y, x))
+    /// The lower bound on the distance of the placed triangles under two nodes: their
+    /// oriented boxes under the relative motion.
+    fn oriented_gaps(&self) -> OrientedGaps {
+        OrientedGaps::new(
+            (self.rel.r, self.rel.t),
+            self.rel.margin,
+            self.rel.eta,
+            (self.a.extent(), self.b.extent()),
+            self.a
+                .pose_tree()
+                .frame_eta()
+                .max(self.b.pose_tree().frame_eta()),
+        )
     }
 
     /// The `f64` nearest pair `(i, j)` by best-first branch and bound under the poses, with
     /// the pairs left open (see [`examine_pair`]). Node pairs are ordered and pruned by
-    /// [`lower_bound2`](Self::lower_bound2), triangle pairs by the distance of their exact
+    /// their [oriented boxes](Self::oriented_gaps), triangle pairs by the distance of their exact
     /// placed boxes, and each examined pair is handled exactly as in
     /// [`mesh_distance`](crate::query::mesh_distance), ties included. Both meshes non-empty.
     fn nearest(&self, open: &mut Open) -> (u32, u32) {
         let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
         let (na, nb) = (ta.nodes(), tb.nodes());
+        let (fa, fb) = (ta.frames(), tb.frames());
+        let gaps = self.oriented_gaps();
+        let bound =
+            |i: u32, j: u32, best: f64| gaps.gap2_beyond(&fa[i as usize], &fb[j as usize], best);
         // Squared distances are never negative: their bit patterns order like the values.
         let key = |d2: f64| Reverse(d2.to_bits());
         with_scratch(na.len(), nb.len(), |s| {
             let mut best = (f64::INFINITY, 0u32, 0u32);
-            let mut next = Some((key(self.lower_bound2(&na[0], &nb[0])), 0u32, 0u32));
+            let mut next = Some((key(bound(0, 0, f64::INFINITY)), 0u32, 0u32));
             let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
             while let Some((Reverse(bits), i, j)) = next.take() {
                 if beyond(f64::from_bits(bits), best.0) {
@@ -106,7 +119,7 @@ impl PosedPair<'_> {
                 // A child that would be popped next anyway (nearest of all) is descended at
                 // once, without a trip through the heap; the order stays best first.
                 for (ci, cj) in children {
-                    let d = self.lower_bound2(&na[ci as usize], &nb[cj as usize]);
+                    let d = bound(ci, cj, best.0);
                     if beyond(d, best.0) {
                         continue;
                     }
@@ -356,17 +369,19 @@ mod tests {
                 c
             };
             let pair = PosedPair::new(&a, &pa, &b, &pb).unwrap();
+            let gaps = pair.oriented_gaps();
             let (na, nb) = (ka.nodes(), kb.nodes());
             let (ra_, rb_) = (ranges(&a), ranges(&b));
-            for (x, &(xs, xe)) in na.iter().zip(&ra_) {
-                for (y, &(ys, ye)) in nb.iter().zip(&rb_) {
+            for (ix, (x, &(xs, xe))) in na.iter().zip(&ra_).enumerate() {
+                for (iy, (y, &(ys, ye))) in nb.iter().zip(&rb_).enumerate() {
                     let k = (xs..xe)
                         .flat_map(|p| (ys..ye).map(move |q| (p, q)))
                         .map(|(p, q)| rank[p][q])
                         .min()
                         .unwrap();
                     let (p, q) = order[k];
-                    let lb = rational_from_f64(pair.lower_bound2(x, y)).unwrap();
+                    let lb = gaps.gap2(&ka.frames()[ix], &kb.frames()[iy]);
+                    let lb = rational_from_f64(lb).unwrap();
                     prop_assert!(lb <= exact[p][q]);
                     // The nearest pair under them is within its exact distance rounded up.
                     prop_assert!(pair.may_be_within(x, y, pair.widened(up(&exact[p][q]))));
@@ -383,6 +398,7 @@ mod tests {
         let a =
             Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap());
         let root = &a.pose_tree().nodes()[0];
+        let frame = &a.pose_tree().frames()[0];
         let (mut pruned, mut above) = (0, 0);
         for k in 0..48 {
             let kf = k as f64;
@@ -396,13 +412,14 @@ mod tests {
             let c = threshold(&wa, &wb);
             let pair = PosedPair::new(&a, &pa, &a, &pb).unwrap();
             assert!(pair.may_be_within(root, root, pair.widened(c)));
-            assert!(pair.lower_bound2(root, root).sqrt() <= c);
+            assert!(pair.oriented_gaps().gap2(frame, frame).sqrt() <= c);
             assert!(a.within_distance_at(&pa, &a, &pb, c).unwrap());
             let mut bare = PosedPair::new(&a, &pa, &a, &pb).unwrap();
             bare.rel.margin = 0.0;
             bare.inv.margin = 0.0;
             pruned += usize::from(!bare.may_be_within(root, root, bare.widened(c)));
-            above += usize::from(bare.lower_bound2(root, root).sqrt() > c * (1.0 + 1e-12));
+            let bare_gap2 = bare.oriented_gaps().without_allowance().gap2(frame, frame);
+            above += usize::from(bare_gap2.sqrt() > c * (1.0 + 1e-12));
         }
         assert!(pruned > 0 && above > 0, "{pruned} {above}");
     }
