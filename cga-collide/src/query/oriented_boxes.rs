@@ -49,9 +49,10 @@
 
 use nalgebra::{Matrix3, Point3, SymmetricEigen, Vector3};
 
-use crate::bvh::Bvh;
-
 type Mat = [[f64; 3]; 3];
+
+/// Nodes over this many triangles keep the coordinate axes.
+const FIT_LIMIT: usize = 256;
 
 const IDENTITY: Mat = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -141,29 +142,38 @@ impl Moments {
 
 /// The box with rows `axes` around the triangles `under` (module docs).
 fn boxed(axes: Mat, under: &[[Point3<f64>; 3]], rho: f64) -> OrientedBox {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for v in under.iter().flatten() {
+        for (k, a) in axes.iter().enumerate() {
+            let p = a[0] * v.x + a[1] * v.y + a[2] * v.z;
+            lo[k] = lo[k].min(p);
+            hi[k] = hi[k].max(p);
+        }
+    }
     let mut frame = OrientedBox {
         axes,
         c: [0.0; 3],
         e: [0.0; 3],
     };
     for (k, a) in axes.iter().enumerate() {
-        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for v in under.iter().flatten() {
-            let p = a[0] * v.x + a[1] * v.y + a[2] * v.z;
-            lo = lo.min(p);
-            hi = hi.max(p);
-        }
         let norm1 = a[0].abs() + a[1].abs() + a[2].abs();
         let slack = 4.0 * U * norm1 * rho + TINY;
-        (frame.c[k], frame.e[k]) = centre_half((lo - slack).next_down(), (hi + slack).next_up());
+        (frame.c[k], frame.e[k]) =
+            centre_half((lo[k] - slack).next_down(), (hi[k] + slack).next_up());
     }
     frame
 }
 
-/// The oriented boxes of the nodes of `bvh` (whose leaves hold `vertices`, in leaf order) and
-/// the tree's bound on the entries of `F Fᵀ - I` (module docs). `rho` bounds every vertex coordinate.
-pub(crate) fn fit(bvh: &Bvh, vertices: &[[Point3<f64>; 3]], rho: f64) -> (Vec<OrientedBox>, f64) {
-    let nodes = bvh.nodes();
+/// The oriented boxes of a tree's nodes, given as `(start, count)` (leaves: a range of
+/// `vertices`, in leaf order; inner nodes: `count = 0` and the left child at `start`, the
+/// right one after it, children after their parent) with their axis-aligned boxes as centre
+/// and half-extents. `rho` bounds every vertex coordinate.
+pub(crate) fn fit(
+    nodes: &[(u32, u32)],
+    aligned: impl Fn(usize) -> ([f64; 3], [f64; 3]),
+    vertices: &[[Point3<f64>; 3]],
+    rho: f64,
+) -> OrientedBoxes {
     // Children follow their parent: one backward pass gathers each subtree's leaf-order range
     // and moments.
     let mut range = vec![(0usize, 0usize); nodes.len()];
@@ -173,9 +183,9 @@ pub(crate) fn fit(bvh: &Bvh, vertices: &[[Point3<f64>; 3]], rho: f64) -> (Vec<Or
     } else {
         1.0
     };
-    for (i, n) in nodes.iter().enumerate().rev() {
-        if n.is_leaf() {
-            let (s, e) = (n.start as usize, (n.start + n.count) as usize);
+    for (i, &(start, count)) in nodes.iter().enumerate().rev() {
+        if count > 0 {
+            let (s, e) = (start as usize, (start + count) as usize);
             range[i] = (s, e);
             for t in &vertices[s..e] {
                 for v in t {
@@ -183,7 +193,7 @@ pub(crate) fn fit(bvh: &Bvh, vertices: &[[Point3<f64>; 3]], rho: f64) -> (Vec<Or
                 }
             }
         } else {
-            let (l, r) = (n.start as usize, n.start as usize + 1);
+            let (l, r) = (start as usize, start as usize + 1);
             range[i] = (range[l].0, range[r].1);
             moments[i] = moments[l].merge(&moments[r]);
         }
@@ -192,11 +202,25 @@ pub(crate) fn fit(bvh: &Bvh, vertices: &[[Point3<f64>; 3]], rho: f64) -> (Vec<Or
     let frames = (0..nodes.len())
         .map(|i| {
             let (s, e) = range[i];
-            let under = &vertices[s..e];
+            let (c, e_aligned) = aligned(i);
+            let aligned = OrientedBox {
+                axes: IDENTITY,
+                c,
+                e: e_aligned,
+            };
             // The principal axes, unless the coordinate axes give a box no larger (symmetric
-            // parts, such as a cube's corners, have no useful principal axes).
-            let principal = boxed(moments[i].axes(), under, rho);
-            let aligned = boxed(IDENTITY, under, rho);
+            // parts, such as a cube's corners, have no useful principal axes). Nodes near the
+            // root keep the coordinate axes: a search meets them a few times only, and fitting
+            // them would read every vertex once per level.
+            if e - s > FIT_LIMIT {
+                return aligned;
+            }
+            let axes = if nodes[i].1 > 0 {
+                triangle_axes(&vertices[s..e])
+            } else {
+                moments[i].axes()
+            };
+            let principal = boxed(axes, &vertices[s..e], rho);
             let volume = |b: &OrientedBox| b.e[0] * b.e[1] * b.e[2];
             let frame = if volume(&principal) < volume(&aligned) {
                 principal
@@ -214,7 +238,49 @@ pub(crate) fn fit(bvh: &Bvh, vertices: &[[Point3<f64>; 3]], rho: f64) -> (Vec<Or
             frame
         })
         .collect();
-    (frames, eta * (1.0 + 4.0 * U) + TINY)
+    OrientedBoxes {
+        boxes: frames,
+        eta: eta * (1.0 + 4.0 * U) + TINY,
+    }
+}
+
+/// Axes for a leaf's few triangles, without an eigen-decomposition: the longest edge and the
+/// normal of its largest triangle (nearly the principal axes of a flat patch).
+fn triangle_axes(under: &[[Point3<f64>; 3]]) -> Mat {
+    let area2 = |t: &[Point3<f64>; 3]| (t[1] - t[0]).cross(&(t[2] - t[0])).norm_squared();
+    let Some(t) = under.iter().max_by(|a, b| area2(a).total_cmp(&area2(b))) else {
+        return IDENTITY;
+    };
+    let edges = [t[1] - t[0], t[2] - t[1], t[0] - t[2]];
+    let longest = edges
+        .iter()
+        .max_by(|a, b| a.norm_squared().total_cmp(&b.norm_squared()))
+        .unwrap_or(&edges[0]);
+    let (Some(x), Some(z)) = (
+        longest.try_normalize(0.0),
+        edges[0].cross(&edges[1]).try_normalize(0.0),
+    ) else {
+        return IDENTITY;
+    };
+    let Some(y) = z.cross(&x).try_normalize(0.0) else {
+        return IDENTITY;
+    };
+    let z = x.cross(&y);
+    let rows = [x, y, z].map(|r| [r.x, r.y, r.z]);
+    if rows.iter().flatten().all(|v| v.is_finite()) {
+        rows
+    } else {
+        IDENTITY
+    }
+}
+
+/// The oriented boxes of a tree's nodes and the bound `η_F` on their axes (module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct OrientedBoxes {
+    /// One box per node, indexed like the nodes.
+    pub boxes: Vec<OrientedBox>,
+    /// Bound on every entry of `F Fᵀ - I` over the boxes' axes `F`.
+    pub eta: f64,
 }
 
 /// The distance bound of two oriented boxes under a relative motion (module docs).
@@ -342,5 +408,148 @@ impl OrientedGaps {
         } else {
             0.0
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::query::posed::tests::soup;
+    use crate::query::{exact_distance_triangle_triangle, Collider};
+    use crate::TriMesh;
+    use ga_core::scalar::{rational_from_f64, Rational};
+    use nalgebra::{Isometry3, Vector3};
+    use proptest::prelude::*;
+
+    fn q(x: f64) -> Rational {
+        rational_from_f64(x).expect("finite")
+    }
+
+    /// The triangles (mesh indices) under every node of `c`'s tree, root first.
+    fn under(c: &Collider) -> Vec<Vec<u32>> {
+        let tree = c.pose_tree();
+        let nodes = tree.nodes();
+        let mut out = vec![Vec::new(); nodes.len()];
+        for i in (0..nodes.len()).rev() {
+            let n = &nodes[i];
+            out[i] = if n.is_leaf() {
+                (n.start..n.start + n.count)
+                    .map(|k| tree.index(k as usize))
+                    .collect()
+            } else {
+                let (l, r) = (n.start as usize, n.start as usize + 1);
+                [out[l].clone(), out[r].clone()].concat()
+            };
+        }
+        out
+    }
+
+    fn scaled(m: &TriMesh, scale: f64, shift: [f64; 3]) -> TriMesh {
+        let v = m
+            .vertices()
+            .iter()
+            .map(|p| Point3::from(p.coords * scale + Vector3::from(shift)))
+            .collect();
+        TriMesh::new(v, m.triangles().to_vec()).unwrap()
+    }
+
+    fn scale() -> impl Strategy<Value = f64> {
+        prop_oneof![Just(1.0), Just(1e-9), Just(1e9), Just(1e-200), Just(1e200)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// Every vertex under a node projects into its box on every axis, in exact arithmetic,
+        /// and the axes are orthonormal up to the tree's `η_F`, at every scale.
+        #[test]
+        fn boxes_hold_every_vertex_exactly(
+            seed in any::<u64>(), n in 1usize..40, s in scale(),
+            shift in prop::array::uniform3(-3.0f64..3.0),
+        ) {
+            let m = scaled(&soup(seed, n, 1.0, 0.4, seed % 3 == 0), s, shift.map(|x| x * s));
+            let c = Collider::new(m);
+            let boxes = c.pose_tree().oriented();
+            let one = Rational::from_integer(1.into());
+            for (b, tris) in boxes.boxes.iter().zip(under(&c)) {
+                for (i, a) in b.axes.iter().enumerate() {
+                    let (lo, hi) = (q(b.c[i]) - q(b.e[i]), q(b.c[i]) + q(b.e[i]));
+                    for &t in &tris {
+                        for v in c.mesh().triangle(t as usize) {
+                            let p = q(a[0]) * q(v.x) + q(a[1]) * q(v.y) + q(a[2]) * q(v.z);
+                            prop_assert!(lo <= p && p <= hi, "vertex outside the box");
+                        }
+                    }
+                    for (j, x) in b.axes.iter().enumerate() {
+                        let dot = q(a[0]) * q(x[0]) + q(a[1]) * q(x[1]) + q(a[2]) * q(x[2]);
+                        let dev = if i == j { dot - &one } else { dot };
+                        prop_assert!(-q(boxes.eta) <= dev && dev <= q(boxes.eta));
+                    }
+                }
+            }
+        }
+
+    }
+
+    proptest! {
+        // Exact rational distances are slow: few cases.
+        #![proptest_config(ProptestConfig::with_cases(10))]
+
+        /// Meshes in one frame: for every pair of nodes, the bound is at most the exact squared
+        /// distance of every pair of triangles under them.
+        #[test]
+        fn same_frame_bound_never_exceeds_the_distance(
+            seed in any::<u64>(), s in scale(),
+            shift in prop::array::uniform3(-2.0f64..2.0),
+        ) {
+            let a = Collider::new(scaled(&soup(seed, 8, 1.0, 0.3, false), s, [0.0; 3]));
+            let b = Collider::new(scaled(&soup(seed ^ 9, 6, 1.0, 0.3, false), s, shift.map(|x| x * s)));
+            let gaps = OrientedGaps::same_frame(
+                (a.extent(), b.extent()),
+                a.pose_tree().oriented().eta.max(b.pose_tree().oriented().eta),
+            );
+            let exact: Vec<Vec<Rational>> = (0..8)
+                .map(|i| (0..6).map(|j| {
+                    exact_distance_triangle_triangle(&a.triangle(i), &b.triangle(j))
+                        .distance2
+                }).collect())
+                .collect();
+            let (ua, ub) = (under(&a), under(&b));
+            let (fa, fb) = (&a.pose_tree().oriented().boxes, &b.pose_tree().oriented().boxes);
+            for (x, ta) in fa.iter().zip(&ua) {
+                for (y, tb) in fb.iter().zip(&ub) {
+                    let least = ta.iter()
+                        .flat_map(|&i| tb.iter().map(move |&j| (i, j)))
+                        .map(|(i, j)| &exact[i as usize][j as usize])
+                        .min()
+                        .unwrap();
+                    let lb = gaps.gap2(x, y);
+                    if lb == f64::INFINITY {
+                        // Squares beyond the f64 range: only for distances beyond it too.
+                        prop_assert!(*least > q(f64::MAX));
+                    } else {
+                        prop_assert!(q(lb) <= *least);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A turned slab gets a box along it (its principal axes), far smaller than its
+    /// axis-aligned box; a cube keeps the coordinate axes (its corners have no principal
+    /// direction).
+    #[test]
+    fn boxes_follow_the_geometry() {
+        let slab = TriMesh::cuboid(Point3::origin(), Point3::new(4.0, 1.0, 0.1)).unwrap();
+        let turn = Isometry3::rotation(Vector3::new(0.3, 0.5, 0.7));
+        let c = Collider::new(slab.transformed(&turn).unwrap());
+        let root = &c.pose_tree().oriented().boxes[0];
+        let volume = root.e.iter().product::<f64>();
+        assert!(volume < 0.5 * 1.01, "{volume}"); // the slab's half-extents: 2 × 0.5 × 0.05
+        let node = &c.pose_tree().nodes()[0];
+        assert!(volume < 0.2 * node.e.iter().product::<f64>());
+        let cube =
+            Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.)).unwrap());
+        assert_eq!(cube.pose_tree().oriented().boxes[0].axes, IDENTITY);
     }
 }

@@ -4,11 +4,11 @@
 //! that placing the triangles of a leaf reads one contiguous block instead of an index and
 //! three scattered vertices per triangle.
 //!
-//! Each node also has an [`OrientedBox`] fitted to its vertices, read only by the distance
-//! searches.
+//! Each node also has an oriented box fitted to its vertices ([`OrientedBoxes`]), fitted on the
+//! first distance search and read only by the distance searches.
 //!
-//! Built once with the collider (about 30 bytes a triangle for the nodes, 64 for the oriented
-//! boxes, 72 for the vertices); the pose queries of [`crate::query::posed`] read nothing else
+//! Built once with the collider (about 30 bytes a triangle for the nodes, 72 for the vertices,
+//! and 64 for the oriented boxes once fitted); the pose queries of [`crate::query::posed`] read nothing else
 //! of the mesh.
 //!
 //! # Conservativeness
@@ -21,10 +21,12 @@
 //! 2⁻¹⁰⁰⁰` when every vertex coordinate is at most `ρ` in magnitude.
 //!
 
+use std::sync::OnceLock;
+
 use nalgebra::Point3;
 
 use crate::bvh::{Aabb, Bvh};
-use crate::query::oriented_boxes::{centre_half, fit, OrientedBox};
+use crate::query::oriented_boxes::{centre_half, fit, OrientedBoxes};
 
 /// A node of the hierarchy for queries under poses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,17 +71,17 @@ pub(crate) struct PoseTree {
     order: Vec<u32>,
     /// The vertices of the triangles, in leaf order.
     vertices: Vec<[Point3<f64>; 3]>,
-    /// The nodes' oriented boxes (same indices as `nodes`).
-    frames: Vec<OrientedBox>,
-    /// Bound on every entry of `F Fᵀ - I` over the oriented boxes' axes `F`.
-    frame_eta: f64,
+    /// Bound on every vertex coordinate.
+    rho: f64,
+    /// The nodes' oriented boxes, fitted on the first distance search.
+    oriented: OnceLock<OrientedBoxes>,
 }
 
 impl PoseTree {
     /// The layout of `bvh`, built over the triangles `triangle(i)`, whose coordinates are at
     /// most `rho` in magnitude.
     pub fn new(bvh: &Bvh, triangle: impl Fn(usize) -> [Point3<f64>; 3], rho: f64) -> PoseTree {
-        let nodes = bvh
+        let nodes: Vec<PoseNode> = bvh
             .nodes()
             .iter()
             .map(|n| {
@@ -94,27 +96,28 @@ impl PoseTree {
             })
             .collect();
         let order = bvh.order().to_vec();
-        let vertices: Vec<_> = order.iter().map(|&t| triangle(t as usize)).collect();
-        let (frames, frame_eta) = fit(bvh, &vertices, rho);
+        let vertices = order.iter().map(|&t| triangle(t as usize)).collect();
         PoseTree {
             nodes,
             order,
             vertices,
-            frames,
-            frame_eta,
+            rho,
+            oriented: OnceLock::new(),
         }
     }
 
-    /// The nodes' oriented boxes (indexed like [`nodes`](Self::nodes)).
-    #[inline(always)]
-    pub fn frames(&self) -> &[OrientedBox] {
-        &self.frames
-    }
-
-    /// Bound on every entry of `F Fᵀ - I` for the axes `F` of every oriented box.
-    #[inline(always)]
-    pub fn frame_eta(&self) -> f64 {
-        self.frame_eta
+    /// The nodes' oriented boxes (indexed like [`nodes`](Self::nodes)), fitted on first use
+    /// (about half the time of building the hierarchy; only the distance searches need them).
+    pub fn oriented(&self) -> &OrientedBoxes {
+        self.oriented.get_or_init(|| {
+            let shape: Vec<(u32, u32)> = self.nodes.iter().map(|n| (n.start, n.count)).collect();
+            fit(
+                &shape,
+                |i| (self.nodes[i].c, self.nodes[i].e),
+                &self.vertices,
+                self.rho,
+            )
+        })
     }
 
     /// The nodes (root first).

@@ -837,7 +837,7 @@ impl Collider {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use nalgebra::{UnitQuaternion, Vector3};
     use proptest::prelude::*;
@@ -947,7 +947,7 @@ mod tests {
     /// `n` random triangles: centres in `[-spread, spread]³`, corners within `jitter` of them
     /// per coordinate; with `degenerate`, every 5th has a repeated corner. Also used by the
     /// tests of [`super::distance`].
-    pub(super) fn soup(
+    pub(crate) fn soup(
         seed: u64,
         n: usize,
         spread: f64,

@@ -94,10 +94,12 @@ pub(crate) fn nearest_pair(
     }
     let (ta, tb) = (a.pose_tree(), b.pose_tree());
     let (na, nb) = (ta.nodes(), tb.nodes());
-    let (fa, fb) = (ta.frames(), tb.frames());
+    let (fa, fb) = (&ta.oriented().boxes[..], &tb.oriented().boxes[..]);
     let (boxes_a, boxes_b) = (a.bvh().nodes(), b.bvh().nodes());
-    let gaps =
-        OrientedGaps::same_frame((a.extent(), b.extent()), ta.frame_eta().max(tb.frame_eta()));
+    let gaps = OrientedGaps::same_frame(
+        (a.extent(), b.extent()),
+        ta.oriented().eta.max(tb.oriented().eta),
+    );
     // The axis-aligned boxes' bound is cheap: the oriented one is only computed when that
     // does not already prune the pair.
     let bound = |i: u32, j: u32, best: f64| {

@@ -62,8 +62,9 @@ impl PosedPair<'_> {
             (self.a.extent(), self.b.extent()),
             self.a
                 .pose_tree()
-                .frame_eta()
-                .max(self.b.pose_tree().frame_eta()),
+                .oriented()
+                .eta
+                .max(self.b.pose_tree().oriented().eta),
         )
     }
 
@@ -75,7 +76,7 @@ impl PosedPair<'_> {
     fn nearest(&self, open: &mut Open) -> (u32, u32) {
         let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
         let (na, nb) = (ta.nodes(), tb.nodes());
-        let (fa, fb) = (ta.frames(), tb.frames());
+        let (fa, fb) = (&ta.oriented().boxes[..], &tb.oriented().boxes[..]);
         let gaps = self.oriented_gaps();
         let bound =
             |i: u32, j: u32, best: f64| gaps.gap2_beyond(&fa[i as usize], &fb[j as usize], best);
@@ -380,7 +381,7 @@ mod tests {
                         .min()
                         .unwrap();
                     let (p, q) = order[k];
-                    let lb = gaps.gap2(&ka.frames()[ix], &kb.frames()[iy]);
+                    let lb = gaps.gap2(&ka.oriented().boxes[ix], &kb.oriented().boxes[iy]);
                     let lb = rational_from_f64(lb).unwrap();
                     prop_assert!(lb <= exact[p][q]);
                     // The nearest pair under them is within its exact distance rounded up.
@@ -398,7 +399,7 @@ mod tests {
         let a =
             Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap());
         let root = &a.pose_tree().nodes()[0];
-        let frame = &a.pose_tree().frames()[0];
+        let frame = &a.pose_tree().oriented().boxes[0];
         let (mut pruned, mut above) = (0, 0);
         for k in 0..48 {
             let kf = k as f64;
