@@ -149,7 +149,15 @@ fn segment_segment<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Near<F> {
             },
         );
     }
-    // The lines' common perpendicular, if it meets both segments.
+    if let Some(near) = common_perpendicular(a, b, c, d) {
+        keep(&mut best, near);
+    }
+    best.unwrap_or_else(|| unreachable!("four candidates"))
+}
+
+/// The points where the common perpendicular of lines `ab` and `cd` meets them, if it meets
+/// both segments (the interior candidate of the nearest points of two segments).
+fn common_perpendicular<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Option<Near<F>> {
     let (u, v, w) = (sub(b, a), sub(d, c), sub(c, a));
     let n = cross(&u, &v);
     let nn = dot(&n, &n);
@@ -160,10 +168,10 @@ fn segment_segment<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Near<F> {
         if s >= zero && s <= nn && t >= zero && t <= nn {
             let p = add_scaled(a, &u, &(s / nn.clone()));
             let q = add_scaled(c, &v, &(t / nn));
-            keep(&mut best, (dist2(&p, &q), p, q));
+            return Some((dist2(&p, &q), p, q));
         }
     }
-    best.unwrap_or_else(|| unreachable!("four candidates"))
+    None
 }
 
 /// Where segment `ab` crosses the plane of the triangle `t` strictly (its end points strictly
@@ -205,12 +213,14 @@ fn triangle_triangle<F: Real>(p: &[V<F>; 3], q: &[V<F>; 3]) -> Near<F> {
         let x = point_triangle(p, v);
         keep(&mut best, (dist2(&x, v), x, v.clone()));
     }
+    // Edge pairs: only their interiors, since a vertex's distance to an edge is never below
+    // its distance to that edge's triangle (a candidate above).
     for i in 0..3 {
         for j in 0..3 {
-            keep(
-                &mut best,
-                segment_segment(&p[i], &p[(i + 1) % 3], &q[j], &q[(j + 1) % 3]),
-            );
+            if let Some(near) = common_perpendicular(&p[i], &p[(i + 1) % 3], &q[j], &q[(j + 1) % 3])
+            {
+                keep(&mut best, near);
+            }
         }
     }
     // Intersecting triangles: an edge of one crosses the other.
@@ -759,6 +769,7 @@ pub(crate) fn examine_pair(
     if centres.is_some_and(|s| separated_beyond(s, best)) {
         return f64::INFINITY; // proved farther than the best so far
     }
+
     let (d2, wx, wy) = triangle_triangle(p, q);
     let witnesses = separation(&sub(&wy, &wx), p, q);
     let seps = [centres, witnesses];
