@@ -283,6 +283,13 @@ pub(crate) struct OrientedBoxes {
     pub eta: f64,
 }
 
+/// The part of the bound that depends on B's node only (see [`OrientedGaps::carry`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Carried {
+    g: Mat,
+    gt: [f64; 3],
+}
+
 /// The distance bound of two oriented boxes under a relative motion (module docs).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OrientedGaps {
@@ -355,24 +362,61 @@ impl OrientedGaps {
     /// anything in B's box `fb`.
     #[cfg(test)]
     pub fn gap2(&self, fa: &OrientedBox, fb: &OrientedBox) -> f64 {
-        self.gap2_beyond(fa, fb, f64::INFINITY)
+        self.gap2_carried(fa, &self.offset(fa), fb, &self.carry(fb), f64::INFINITY)
     }
 
-    /// [`gap2`](Self::gap2), or only the bound from A's three axes when that already exceeds
-    /// `best` (the caller then prunes the pair, and B's axes are not worth computing).
+    /// B's box axes carried into A's frame (`G = R̂ F_Bᵀ`, column `j` is `nⱼ`) and `Gᵀ t̂`: the
+    /// part of the bound that depends on B's node only, worth keeping for the node's pairs.
     #[inline(always)]
-    pub fn gap2_beyond(&self, fa: &OrientedBox, fb: &OrientedBox, best: f64) -> f64 {
-        let (r, t, a, b) = (&self.r, &self.t, &fa.axes, &fb.axes);
+    pub fn carry(&self, fb: &OrientedBox) -> Carried {
+        let (r, t, b) = (&self.r, &self.t, &fb.axes);
         let g: Mat = std::array::from_fn(|i| {
             std::array::from_fn(|j| r[i][0] * b[j][0] + r[i][1] * b[j][1] + r[i][2] * b[j][2])
         });
+        let gt = std::array::from_fn(|j| g[0][j] * t[0] + g[1][j] * t[1] + g[2][j] * t[2]);
+        Carried { g, gt }
+    }
+
+    /// [`gap2_carried`](Self::gap2_carried) for a bound made by
+    /// [`same_frame`](Self::same_frame): the same numbers, without multiplying by `I` and `0`.
+    #[inline(always)]
+    pub fn gap2_same_frame(&self, fa: &OrientedBox, fb: &OrientedBox, best: f64) -> f64 {
+        let b = &fb.axes;
+        let carried = Carried {
+            g: std::array::from_fn(|i| std::array::from_fn(|j| b[j][i])),
+            gt: [0.0; 3],
+        };
+        self.gap2_carried(fa, &[0.0; 3], fb, &carried, best)
+    }
+
+    /// `F_A t̂`: the part of the bound that depends on A's node only.
+    #[inline(always)]
+    pub fn offset(&self, fa: &OrientedBox) -> [f64; 3] {
+        let (t, a) = (&self.t, &fa.axes);
+        std::array::from_fn(|i| a[i][0] * t[0] + a[i][1] * t[1] + a[i][2] * t[2])
+    }
+
+    /// The bound from the parts [`offset`](Self::offset) of `fa` and [`carry`](Self::carry)
+    /// of `fb`: that of [`gap2`](Self::gap2), or only the bound from A's three axes when that
+    /// already exceeds `best` (the caller then prunes the pair, and B's axes are not worth
+    /// computing).
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // B's axes are the columns of `m`
+    pub fn gap2_carried(
+        &self,
+        fa: &OrientedBox,
+        at: &[f64; 3],
+        fb: &OrientedBox,
+        carried: &Carried,
+        best: f64,
+    ) -> f64 {
+        let (a, g) = (&fa.axes, &carried.g);
         let m: Mat = std::array::from_fn(|i| {
             std::array::from_fn(|j| a[i][0] * g[0][j] + a[i][1] * g[1][j] + a[i][2] * g[2][j])
         });
         let (mut on_a, mut on_b) = (0.0, 0.0);
         for i in 0..3 {
-            let at = a[i][0] * t[0] + a[i][1] * t[1] + a[i][2] * t[2];
-            let d = m[i][0] * fb.c[0] + m[i][1] * fb.c[1] + m[i][2] * fb.c[2] + at - fa.c[i];
+            let d = m[i][0] * fb.c[0] + m[i][1] * fb.c[1] + m[i][2] * fb.c[2] + at[i] - fa.c[i];
             let reach = m[i][0].abs() * fb.e[0]
                 + m[i][1].abs() * fb.e[1]
                 + m[i][2].abs() * fb.e[2]
@@ -386,8 +430,8 @@ impl OrientedGaps {
             return lb_a;
         }
         for j in 0..3 {
-            let nt = g[0][j] * t[0] + g[1][j] * t[1] + g[2][j] * t[2];
-            let d = m[0][j] * fa.c[0] + m[1][j] * fa.c[1] + m[2][j] * fa.c[2] - fb.c[j] - nt;
+            let d =
+                m[0][j] * fa.c[0] + m[1][j] * fa.c[1] + m[2][j] * fa.c[2] - fb.c[j] - carried.gt[j];
             let reach = m[0][j].abs() * fa.e[0]
                 + m[1][j].abs() * fa.e[1]
                 + m[2][j].abs() * fa.e[2]

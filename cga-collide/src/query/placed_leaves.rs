@@ -15,6 +15,7 @@ use std::ops::Range;
 use nalgebra::Isometry3;
 
 use crate::bvh::Aabb;
+use crate::query::oriented_boxes::{Carried, OrientedBox, OrientedGaps};
 use crate::query::pose_tree::{PoseNode, PoseTree};
 use crate::Triangle;
 
@@ -62,6 +63,11 @@ pub(crate) struct Scratch {
     pub stack: Vec<(u32, u32)>,
     /// The best-first search's queue of node pairs, nearest (smallest key) first.
     pub heap: BinaryHeap<(Reverse<u64>, u32, u32)>,
+    /// The distance search's parts of the oriented-box bound of A's nodes and of B's (see
+    /// [`OrientedGaps`]), each computed once per traversal: valid where the stamp is the
+    /// traversal's epoch.
+    offsets: Vec<(u32, [f64; 3])>,
+    carried: Vec<(u32, Carried)>,
 }
 
 impl Scratch {
@@ -80,9 +86,43 @@ impl Scratch {
                 t.first.resize(n, 0);
             }
         }
+        if self.epoch == 1 {
+            self.offsets.fill((0, [0.0; 3]));
+            self.carried.fill((0, Carried::default()));
+        }
+        if self.offsets.len() < nodes_a {
+            self.offsets.resize(nodes_a, (0, [0.0; 3]));
+        }
+        if self.carried.len() < nodes_b {
+            self.carried.resize(nodes_b, (0, Carried::default()));
+        }
         self.placed.clear();
         self.stack.clear();
         self.heap.clear();
+    }
+
+    /// The oriented-box bound of node `i` of A (box `fa`) and node `j` of B (box `fb`) under
+    /// `gaps`, from the per-node parts kept for this traversal (see
+    /// [`OrientedGaps::gap2_carried`]).
+    #[inline(always)]
+    pub fn oriented_gap2(
+        &mut self,
+        gaps: &OrientedGaps,
+        (i, fa): (u32, &OrientedBox),
+        (j, fb): (u32, &OrientedBox),
+        best: f64,
+    ) -> f64 {
+        let epoch = self.epoch;
+        let o = &mut self.offsets[i as usize];
+        if o.0 != epoch {
+            *o = (epoch, gaps.offset(fa));
+        }
+        let at = o.1;
+        let c = &mut self.carried[j as usize];
+        if c.0 != epoch {
+            *c = (epoch, gaps.carry(fb));
+        }
+        gaps.gap2_carried(fa, &at, fb, &c.1, best)
     }
 
     /// The placed triangles of leaf `node` of tree `side` (0: A, 1: B), placing them on first

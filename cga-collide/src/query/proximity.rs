@@ -108,7 +108,7 @@ pub(crate) fn nearest_pair(
         if beyond(d, best) {
             d
         } else {
-            d.max(gaps.gap2_beyond(&fa[i], &fb[j], best))
+            d.max(gaps.gap2_same_frame(&fa[i], &fb[j], best))
         }
     };
     let mut best = (f64::INFINITY, 0u32, 0u32);

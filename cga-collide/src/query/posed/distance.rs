@@ -12,7 +12,7 @@ use super::{PoseError, PosedPair};
 use crate::query::clearance::{triangles_within, trivial};
 use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Open};
 use crate::query::oriented_boxes::OrientedGaps;
-use crate::query::placed_leaves::{with_scratch, Placed};
+use crate::query::placed_leaves::{with_scratch, Placed, Scratch};
 use crate::query::pose_tree::PoseNode;
 use crate::query::proximity::{beyond, box_distance2, boxes_within, improves};
 use crate::query::Collider;
@@ -78,13 +78,14 @@ impl PosedPair<'_> {
         let (na, nb) = (ta.nodes(), tb.nodes());
         let (fa, fb) = (&ta.oriented().boxes[..], &tb.oriented().boxes[..]);
         let gaps = self.oriented_gaps();
-        let bound =
-            |i: u32, j: u32, best: f64| gaps.gap2_beyond(&fa[i as usize], &fb[j as usize], best);
+        let bound = |s: &mut Scratch, i: u32, j: u32, best: f64| {
+            s.oriented_gap2(&gaps, (i, &fa[i as usize]), (j, &fb[j as usize]), best)
+        };
         // Squared distances are never negative: their bit patterns order like the values.
         let key = |d2: f64| Reverse(d2.to_bits());
         with_scratch(na.len(), nb.len(), |s| {
             let mut best = (f64::INFINITY, 0u32, 0u32);
-            let mut next = Some((key(bound(0, 0, f64::INFINITY)), 0u32, 0u32));
+            let mut next = Some((key(bound(s, 0, 0, f64::INFINITY)), 0u32, 0u32));
             let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
             while let Some((Reverse(bits), i, j)) = next.take() {
                 if beyond(f64::from_bits(bits), best.0) {
@@ -120,7 +121,7 @@ impl PosedPair<'_> {
                 // A child that would be popped next anyway (nearest of all) is descended at
                 // once, without a trip through the heap; the order stays best first.
                 for (ci, cj) in children {
-                    let d = bound(ci, cj, best.0);
+                    let d = bound(s, ci, cj, best.0);
                     if beyond(d, best.0) {
                         continue;
                     }
