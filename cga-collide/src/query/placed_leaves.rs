@@ -8,7 +8,6 @@
 //! to the placed mesh's.
 
 use std::cell::RefCell;
-use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::ops::Range;
 
@@ -61,8 +60,8 @@ pub(crate) struct Scratch {
     placed: Vec<Placed>,
     /// The traversal's stack of node pairs.
     pub stack: Vec<(u32, u32)>,
-    /// The best-first search's queue of node pairs, nearest (smallest key) first.
-    pub heap: BinaryHeap<(Reverse<u64>, u32, u32)>,
+    /// The best-first search's queue of node pairs (see `proximity::queued`).
+    pub heap: BinaryHeap<u128>,
     /// The distance search's parts of the oriented-box bound of A's nodes and of B's (see
     /// [`OrientedGaps`]), each computed once per traversal: valid where the stamp is the
     /// traversal's epoch.

@@ -3,7 +3,6 @@
 //! distance, or one mesh against itself) are [`Bvh`](crate::bvh::Bvh)'s. The search reads the
 //! colliders' pose layout (nodes, oriented boxes, vertices in leaf order).
 
-use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use crate::bvh::{Aabb, MAX_LEAF};
@@ -56,6 +55,25 @@ pub(crate) fn improves(d2: f64, i: u32, j: u32, best: &(f64, u32, u32)) -> bool 
 #[inline(always)]
 pub(crate) fn beyond(lower: f64, best: f64) -> bool {
     lower * (1.0 - 1e-9) > best
+}
+
+/// A node pair `(i, j)` with the lower bound `d2` on its squared distance, packed for a
+/// max-heap that pops the least bound first (ties: the larger pair first). Squared distances
+/// are never negative (nor NaN), so their bit patterns order like the values, and one integer
+/// comparison orders the entries.
+#[inline(always)]
+pub(crate) fn queued(d2: f64, i: u32, j: u32) -> u128 {
+    (u128::from(!d2.to_bits()) << 64) | (u128::from(i) << 32) | u128::from(j)
+}
+
+/// The bound and the pair of a [`queued`] entry.
+#[inline(always)]
+pub(crate) fn unqueued(e: u128) -> (f64, u32, u32) {
+    (
+        f64::from_bits(!((e >> 64) as u64)),
+        (e >> 32) as u32,
+        e as u32,
+    )
 }
 
 /// The corners of a triangle of a mesh as raw coordinates.
@@ -113,14 +131,11 @@ pub(crate) fn nearest_pair(
     };
     let mut best = (f64::INFINITY, 0u32, 0u32);
     let prune = beyond;
-    // Squared distances are never negative (nor NaN for finite boxes), so their bit patterns
-    // order like the values: the heap compares integers.
-    let key = |d2: f64| Reverse(d2.to_bits());
     let mut heap = BinaryHeap::with_capacity(256);
-    let mut next = Some((key(bound(0, 0, f64::INFINITY)), 0u32, 0u32));
+    let mut next = Some(queued(bound(0, 0, f64::INFINITY), 0, 0));
     let mut leaf_b: Vec<(u32, Corners, Aabb)> = Vec::with_capacity(MAX_LEAF);
-    while let Some((Reverse(bits), i, j)) = next.take() {
-        if prune(f64::from_bits(bits), best.0) {
+    while let Some((lower, i, j)) = next.take().map(unqueued) {
+        if prune(lower, best.0) {
             break; // everything left is farther
         }
         let (x, y) = (&na[i as usize], &nb[j as usize]);
@@ -164,7 +179,7 @@ pub(crate) fn nearest_pair(
             if prune(d, best.0) {
                 continue;
             }
-            let entry = (key(d), ci, cj);
+            let entry = queued(d, ci, cj);
             match next {
                 None if heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
                 Some(n) if entry > n => {

@@ -3,7 +3,6 @@
 //! leaves and the rounding arguments are those of the [parent module](super) (its section
 //! "Clearance and distance").
 
-use std::cmp::Reverse;
 use std::ops::ControlFlow;
 
 use nalgebra::Isometry3;
@@ -14,7 +13,7 @@ use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Op
 use crate::query::oriented_boxes::OrientedGaps;
 use crate::query::placed_leaves::{with_scratch, Placed, Scratch};
 use crate::query::pose_tree::PoseNode;
-use crate::query::proximity::{beyond, box_distance2, boxes_within, improves};
+use crate::query::proximity::{beyond, box_distance2, boxes_within, improves, queued, unqueued};
 use crate::query::Collider;
 
 type P3 = [f64; 3];
@@ -81,14 +80,12 @@ impl PosedPair<'_> {
         let bound = |s: &mut Scratch, i: u32, j: u32, best: f64| {
             s.oriented_gap2(&gaps, (i, &fa[i as usize]), (j, &fb[j as usize]), best)
         };
-        // Squared distances are never negative: their bit patterns order like the values.
-        let key = |d2: f64| Reverse(d2.to_bits());
         with_scratch(na.len(), nb.len(), |s| {
             let mut best = (f64::INFINITY, 0u32, 0u32);
-            let mut next = Some((key(bound(s, 0, 0, f64::INFINITY)), 0u32, 0u32));
+            let mut next = Some(queued(bound(s, 0, 0, f64::INFINITY), 0, 0));
             let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
-            while let Some((Reverse(bits), i, j)) = next.take() {
-                if beyond(f64::from_bits(bits), best.0) {
+            while let Some((lower, i, j)) = next.take().map(unqueued) {
+                if beyond(lower, best.0) {
                     break; // everything left is farther
                 }
                 let (x, y) = (&na[i as usize], &nb[j as usize]);
@@ -125,7 +122,7 @@ impl PosedPair<'_> {
                     if beyond(d, best.0) {
                         continue;
                     }
-                    let entry = (key(d), ci, cj);
+                    let entry = queued(d, ci, cj);
                     match next {
                         None if s.heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
                         Some(n) if entry > n => {
