@@ -130,13 +130,7 @@ impl Moments {
         let Some(y) = (second - x * x.dot(&second)).try_normalize(1e-6) else {
             return IDENTITY;
         };
-        let z = x.cross(&y);
-        let rows = [x, y, z].map(|r| [r.x, r.y, r.z]);
-        if rows.iter().flatten().all(|v| v.is_finite()) {
-            rows
-        } else {
-            IDENTITY
-        }
+        right_handed(&x, &y)
     }
 }
 
@@ -265,8 +259,13 @@ fn triangle_axes(under: &[[Point3<f64>; 3]]) -> Mat {
     let Some(y) = z.cross(&x).try_normalize(0.0) else {
         return IDENTITY;
     };
-    let z = x.cross(&y);
-    let rows = [x, y, z].map(|r| [r.x, r.y, r.z]);
+    right_handed(&x, &y)
+}
+
+/// The rows `x`, `y`, `x × y` (unit `x` and `y` at right angles), or the coordinate axes if
+/// anything is not finite.
+fn right_handed(x: &Vector3<f64>, y: &Vector3<f64>) -> Mat {
+    let rows = [*x, *y, x.cross(y)].map(|r| [r.x, r.y, r.z]);
     if rows.iter().flatten().all(|v| v.is_finite()) {
         rows
     } else {
