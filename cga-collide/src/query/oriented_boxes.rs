@@ -5,10 +5,11 @@
 //!
 //! Axis-aligned boxes bound the distance of parts that are turned against the axes (or against
 //! each other, under a pose) far worse than boxes that follow the geometry: on bunny00 against
-//! the armadillo turned by one radian, the search with oriented boxes visits 2.4 times fewer
-//! node pairs and 4.7 times fewer leaf pairs. Each node's box has the principal axes of the
-//! vertices under it (from their covariance, built bottom-up) and the interval of their
-//! projections on each axis.
+//! the armadillo turned by one radian under a pose, the search with oriented boxes visits 2.4
+//! times fewer node pairs and 4.7 times fewer leaf pairs. Each node's box has the principal axes
+//! of the vertices under it (from their covariance, built bottom-up; for a leaf, the longest
+//! edge and the normal of its largest triangle), or the coordinate axes when those give a
+//! smaller box, and the interval of the vertices' projections on each axis.
 //!
 //! # The boxes are proved
 //! A box is three `f64` rows `aᵢ` (the matrix `F`; nearly orthonormal: every entry of
