@@ -7,7 +7,7 @@ use std::collections::BinaryHeap;
 
 use crate::bvh::{Aabb, MAX_LEAF};
 use crate::query::oriented_boxes::OrientedGaps;
-use crate::query::pose_tree::PoseTree;
+use crate::query::pose_tree::{PoseNode, PoseTree};
 use crate::query::Collider;
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true
@@ -74,6 +74,32 @@ pub(crate) fn unqueued(e: u128) -> (f64, u32, u32) {
         (e >> 32) as u32,
         e as u32,
     )
+}
+
+/// The two child pairs of a node pair `(i, j)` that is not a pair of leaves: the larger node
+/// (by box area) is split, a leaf never.
+#[inline(always)]
+pub(crate) fn child_pairs(i: u32, x: &PoseNode, j: u32, y: &PoseNode) -> [(u32, u32); 2] {
+    if !x.is_leaf() && (y.is_leaf() || x.size >= y.size) {
+        [(x.start, j), (x.start + 1, j)]
+    } else {
+        [(i, y.start), (i, y.start + 1)]
+    }
+}
+
+/// Queues a child `entry` (see [`queued`]) of a best-first search whose next pair is `next`: a
+/// child that would be popped next anyway (nearest of all) is kept as `next`, to be descended
+/// at once without a trip through the heap; the order stays best first.
+#[inline(always)]
+pub(crate) fn enqueue(next: &mut Option<u128>, heap: &mut BinaryHeap<u128>, entry: u128) {
+    match *next {
+        None if heap.peek().is_none_or(|top| entry >= *top) => *next = Some(entry),
+        Some(n) if entry > n => {
+            heap.push(n);
+            *next = Some(entry);
+        }
+        _ => heap.push(entry),
+    }
 }
 
 /// The corners of a triangle of a mesh as raw coordinates.
@@ -166,27 +192,10 @@ pub(crate) fn nearest_pair(
             next = heap.pop();
             continue;
         }
-        let split_a = !x.is_leaf() && (y.is_leaf() || x.size >= y.size);
-        let children = if split_a {
-            [(x.start, j), (x.start + 1, j)]
-        } else {
-            [(i, y.start), (i, y.start + 1)]
-        };
-        // A child that would be popped next anyway (nearest of all) is descended at once,
-        // without a trip through the heap; the order stays best first.
-        for (ci, cj) in children {
+        for (ci, cj) in child_pairs(i, x, j, y) {
             let d = bound(ci, cj, best.0);
-            if prune(d, best.0) {
-                continue;
-            }
-            let entry = queued(d, ci, cj);
-            match next {
-                None if heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
-                Some(n) if entry > n => {
-                    heap.push(n);
-                    next = Some(entry);
-                }
-                _ => heap.push(entry),
+            if !prune(d, best.0) {
+                enqueue(&mut next, &mut heap, queued(d, ci, cj));
             }
         }
         if next.is_none() {

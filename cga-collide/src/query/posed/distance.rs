@@ -13,7 +13,9 @@ use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Op
 use crate::query::oriented_boxes::OrientedGaps;
 use crate::query::placed_leaves::{with_scratch, Placed, Scratch};
 use crate::query::pose_tree::PoseNode;
-use crate::query::proximity::{beyond, box_distance2, boxes_within, improves, queued, unqueued};
+use crate::query::proximity::{
+    beyond, box_distance2, boxes_within, child_pairs, enqueue, improves, queued, unqueued,
+};
 use crate::query::Collider;
 
 type P3 = [f64; 3];
@@ -109,27 +111,10 @@ impl PosedPair<'_> {
                     next = s.heap.pop();
                     continue;
                 }
-                let split_a = !x.is_leaf() && (y.is_leaf() || x.size >= y.size);
-                let children = if split_a {
-                    [(x.start, j), (x.start + 1, j)]
-                } else {
-                    [(i, y.start), (i, y.start + 1)]
-                };
-                // A child that would be popped next anyway (nearest of all) is descended at
-                // once, without a trip through the heap; the order stays best first.
-                for (ci, cj) in children {
+                for (ci, cj) in child_pairs(i, x, j, y) {
                     let d = bound(s, ci, cj, best.0);
-                    if beyond(d, best.0) {
-                        continue;
-                    }
-                    let entry = queued(d, ci, cj);
-                    match next {
-                        None if s.heap.peek().is_none_or(|top| entry >= *top) => next = Some(entry),
-                        Some(n) if entry > n => {
-                            s.heap.push(n);
-                            next = Some(entry);
-                        }
-                        _ => s.heap.push(entry),
+                    if !beyond(d, best.0) {
+                        enqueue(&mut next, &mut s.heap, queued(d, ci, cj));
                     }
                 }
                 if next.is_none() {
