@@ -10,27 +10,22 @@
 //! | [`exact`] | the bottom layer: certified signs of polynomial predicates, error-bounded `f64`, exact fall-backs |
 //! | [`shape`] | [`Segment`], [`Triangle`], [`Sphere`] (surface), [`Ball`] (solid), convex polyhedra, [`TriMesh`] and its loaders |
 //! | [`conformal`] | conformal primitives (points, point pairs, flat points, lines, circles, planes, spheres), versors, exact meets |
-//! | [`bvh`] | the box tree over a mesh's triangles that the mesh queries descend |
-//! | [`query`] | pairwise tests (`query::intersects_<a>_<b>`), plain-`f64` baselines, the convex test, mesh queries ([`query::Collider`]) |
+//! | [`query`] | operations between two primitives: `intersects_<a>_<b>`, `within_distance_<a>_<b>`, `distance_<a>_<b>` |
+//! | [`bounding`] | how candidates are found: the box tree over a mesh's triangles ([`bounding::Bvh`]) |
+//! | [`collider`] | [`Collider`]: a mesh built once, and every question about it |
 //! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
-//! | `testing` | test oracles and adversarial inputs (feature `testing`) |
+//! | `testing` | test oracles, adversarial inputs, plain-`f64` baselines, brute-force twins (feature `testing`) |
 //!
-//! # Choosing a query
-//! | question | call |
-//! |---|---|
-//! | do two shapes (segment, triangle, sphere surface, ball) meet? | [`query::intersects_segment_triangle`] and the other `query::intersects_<a>_<b>`, or `a.intersects(&b)` |
-//! | which triangles of a mesh does a shape meet? | [`query::Collider::segment_hits`], `triangle_hits`, `sphere_hits`, `ball_hits` (`*_at` under a pose) |
-//! | do two meshes touch at these poses? | [`query::Collider::collides_at`] |
-//! | which triangle pairs intersect? | [`query::Collider::intersecting_pairs_at`] |
-//! | many poses at once, over the cores? | [`query::Collider::collides_batch`], [`query::Collider::intersecting_pairs_batch`] |
-//! | do two closed solids overlap (one may be inside the other)? | [`query::Collider::collides_solid_at`] |
-//! | are they within distance `c`? (exact, closed) | [`query::meshes_within_distance`], `query::within_distance_<a>_<b>` |
-//! | how far apart, and where? | [`query::mesh_distance`] (proved error bound), [`query::exact_mesh_distance`] |
-//! | how do they touch? | [`query::contact_class`], [`query::contact_geometry`] |
-//! | does a mesh cut itself? | [`query::self_intersections`] |
-//! | does a point lie in a closed mesh? | [`query::point_in_solid`], [`query::Collider::contains_point_at`] |
-//! | how do a line and a sphere meet (conformal)? | [`conformal::meet`] |
+//! Errors of every kind are one type, [`Error`], saying what was wrong and where.
+//!
+//! # One calling style
+//! Every question about meshes is a method of the [`Collider`] that holds the built data: in one
+//! frame `a.x(&b)`, under poses `a.x_at(&pose_a, &b, &pose_b)` (coal's and parry's order), many
+//! poses at once `a.x_batch(&b, &poses)`. How a query is run (box tree or brute force) is the
+//! collider's [`collider::Mode`], the same in both frames. The table of questions is in
+//! [`collider`]; operations between two primitives are the free functions of [`query`]. New
+//! kinds of objects (scenes, motion between poses) follow the same shape.
 //!
 //! The repository README has a quickstart (compiled as a doctest) and examples under
 //! `cga-collide/examples/`.
@@ -47,12 +42,13 @@
 //! let s = Segment::new(p(0.5, 0.5, -1.), p(0.5, 0.5, 1.))?; // passes through an edge
 //! assert!(query::intersects_segment_triangle(&s, &t));
 //! assert!(t.intersects(&s));
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod bvh;
+pub mod bounding;
+pub mod collider;
 pub mod conformal;
 pub mod error;
 pub mod exact;
@@ -65,7 +61,7 @@ pub mod shape;
 #[cfg(feature = "testing")]
 pub mod testing;
 
-pub use error::GeometryError;
+pub use error::Error;
 pub use query::{Intersects, IntersectsWith};
 pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
 

@@ -9,7 +9,7 @@ use ga_core::prelude::*;
 use ga_core::scalar::Rational;
 use nalgebra::{Point3, Vector3};
 
-use crate::error::GeometryError;
+use crate::error::Error;
 use crate::exact::{decide, CertifiedScalar, ErrF64};
 
 // ---------------------------------------------------------------------------------------------
@@ -57,11 +57,11 @@ pub(crate) fn finite(
     constructor: &'static str,
     argument: &'static str,
     v: f64,
-) -> Result<(), GeometryError> {
+) -> Result<(), Error> {
     if v.is_finite() {
         Ok(())
     } else {
-        Err(GeometryError::NonFiniteInput {
+        Err(Error::NonFiniteInput {
             constructor,
             argument,
             value: v,
@@ -73,7 +73,7 @@ pub(crate) fn finite3(
     constructor: &'static str,
     names: [&'static str; 3],
     v: &Vector3<f64>,
-) -> Result<(), GeometryError> {
+) -> Result<(), Error> {
     for (name, x) in names.into_iter().zip(v.iter()) {
         finite(constructor, name, *x)?;
     }
@@ -83,15 +83,15 @@ pub(crate) fn finite3(
 pub(crate) fn finite_blade<X: Into<Multivector<f64>>>(
     constructor: &'static str,
     blade: X,
-) -> Result<(), GeometryError> {
+) -> Result<(), Error> {
     for c in coeffs(blade) {
         finite(constructor, "blade", c)?;
     }
     Ok(())
 }
 
-pub(crate) fn degenerate(constructor: &'static str, reason: &'static str) -> GeometryError {
-    GeometryError::Degenerate {
+pub(crate) fn degenerate(constructor: &'static str, reason: &'static str) -> Error {
+    Error::Degenerate {
         constructor,
         reason,
     }
@@ -101,7 +101,7 @@ pub(crate) fn checked_point3(
     constructor: &'static str,
     what: &'static str,
     p: Point3<f64>,
-) -> Result<Point3<f64>, GeometryError> {
+) -> Result<Point3<f64>, Error> {
     if p.iter().all(|x| x.is_finite()) {
         Ok(p)
     } else {

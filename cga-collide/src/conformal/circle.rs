@@ -7,7 +7,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::blades::*;
 use super::{Plane, Sphere};
-use crate::error::GeometryError;
+use crate::error::Error;
 use crate::exact::{all_zero, decide, CertifiedScalar, ErrF64};
 
 /// A circle, OPNS blade `C = P1 ∧ P2 ∧ P3` (grade 3; the thesis's (II.21)).
@@ -22,7 +22,7 @@ use crate::exact::{all_zero, decide, CertifiedScalar, ErrF64};
 /// assert!((c.centre() - Point3::new(0.0, 0.0, 5.0)).norm() < 1e-12);
 /// assert!((c.radius_squared() - 1.0).abs() < 1e-12);
 /// assert!((c.normal().dot(&Vector3::z()).abs() - 1.0).abs() < 1e-12);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Circle {
@@ -36,7 +36,7 @@ impl Circle {
         a: Point3<f64>,
         b: Point3<f64>,
         c: Point3<f64>,
-    ) -> Result<Self, GeometryError> {
+    ) -> Result<Self, Error> {
         const C: &str = "conformal::Circle::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;
@@ -72,7 +72,7 @@ impl Circle {
         c: Point3<f64>,
         n: Vector3<f64>,
         r: f64,
-    ) -> Result<Self, GeometryError> {
+    ) -> Result<Self, Error> {
         let s = Sphere::from_centre_radius(c, r)?;
         let p = Plane::from_normal_offset(n, n.dot(&c.coords))?;
         Ok(Circle {
@@ -91,9 +91,9 @@ impl Circle {
     /// assert_eq!(Circle::from_ipns(c.ipns())?, c);
     /// let l = Line::from_point_direction(Point3::origin(), Vector3::z())?;
     /// assert!(Circle::from_blade(*l.blade()).is_err());
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_blade(blade: Trivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(blade: Trivector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Circle::from_blade";
         finite_blade(C, blade)?;
         if coeffs(blade.wedge(&n_inf::<f64>()))
@@ -108,7 +108,7 @@ impl Circle {
         Ok(Circle { blade })
     }
     /// The circle of an IPNS bivector (`from_blade(undual(C*))`).
-    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, Error> {
         Circle::from_blade(b.undual())
     }
     pub(crate) fn from_blade_unchecked(blade: Trivector<f64>) -> Self {

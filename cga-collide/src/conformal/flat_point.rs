@@ -5,7 +5,7 @@ use ga_core::prelude::*;
 use nalgebra::Point3;
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 
 /// A flat point, OPNS blade `F(x) ∧ n_inf` (grade 2): the meet of a line and a plane.
 ///
@@ -14,7 +14,7 @@ use crate::error::GeometryError;
 /// use cga_collide::nalgebra::Point3;
 /// let f = FlatPoint::new(Point3::new(1.0, -2.0, 0.5))?;
 /// assert_eq!(f.position(), Some(Point3::new(1.0, -2.0, 0.5)));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlatPoint {
@@ -23,7 +23,7 @@ pub struct FlatPoint {
 
 impl FlatPoint {
     /// The flat point at `x`. Fails on a non-finite coordinate.
-    pub fn new(x: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn new(x: Point3<f64>) -> Result<Self, Error> {
         finite3(
             "conformal::FlatPoint::new",
             ["x.x", "x.y", "x.z"],
@@ -42,9 +42,9 @@ impl FlatPoint {
     /// use cga_collide::nalgebra::Point3;
     /// let f = FlatPoint::new(Point3::new(1.0, 2.0, 3.0))?;
     /// assert_eq!(FlatPoint::from_ipns(f.ipns())?, f);
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::FlatPoint::from_blade";
         finite_blade(C, blade)?;
         let x = flat_point_location(&blade)
@@ -52,7 +52,7 @@ impl FlatPoint {
         FlatPoint::new(x)
     }
     /// The flat point of an IPNS trivector (`from_blade(undual(F*))`).
-    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, Error> {
         FlatPoint::from_blade(t.undual())
     }
     pub(crate) fn from_blade_unchecked(blade: Bivector<f64>) -> Self {

@@ -6,7 +6,7 @@ use ga_core::scalar::Rational;
 use nalgebra::{Point3, Vector3};
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 use crate::exact::{all_zero, decide, CertifiedScalar, ErrF64};
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -25,7 +25,7 @@ pub(crate) enum LineDef {
 /// assert_eq!(l.support_point(), Point3::new(1.0, 0.0, 0.0));
 /// assert!(l.contains(&Point3::new(1.0, -7.0, 0.0)));
 /// assert!(Line::from_points(Point3::origin(), Point3::origin()).is_err());
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Line {
@@ -36,7 +36,7 @@ pub struct Line {
 impl Line {
     /// The line through `a` and `b`: `F(a) ∧ F(b) ∧ n_inf`. Fails on non-finite coordinates
     /// and when `a == b`.
-    pub fn from_points(a: Point3<f64>, b: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn from_points(a: Point3<f64>, b: Point3<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Line::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;
@@ -47,7 +47,7 @@ impl Line {
     }
     /// The line through `p` with direction `d`: `F(p) ∧ d ∧ n_inf`. Fails on non-finite input
     /// and when `d` is zero.
-    pub fn from_point_direction(p: Point3<f64>, d: Vector3<f64>) -> Result<Self, GeometryError> {
+    pub fn from_point_direction(p: Point3<f64>, d: Vector3<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Line::from_point_direction";
         finite3(C, ["p.x", "p.y", "p.z"], &p.coords)?;
         finite3(C, ["d.x", "d.y", "d.z"], &d)?;
@@ -67,9 +67,9 @@ impl Line {
     /// let m = Line::from_blade(*l.blade() * -3.0)?;
     /// assert_eq!(m.support_point(), Point3::new(0.0, 2.0, 0.0));
     /// assert_eq!(m.direction(), -Vector3::x());
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_blade(t: Trivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(t: Trivector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Line::from_blade";
         finite_blade(C, t)?;
         let d = Vector3::new(t.e145, t.e245, t.e345);
@@ -90,9 +90,9 @@ impl Line {
     /// let l = Line::from_point_direction(Point3::new(1.0, 2.0, 3.0), Vector3::z())?;
     /// let m = Line::from_ipns(l.ipns())?;
     /// assert_eq!((m.support_point(), m.direction()), (Point3::new(1.0, 2.0, 0.0), Vector3::z()));
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(b: Bivector<f64>) -> Result<Self, Error> {
         Line::from_blade(b.undual())
     }
     fn build(def: LineDef) -> Self {

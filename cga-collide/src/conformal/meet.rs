@@ -41,7 +41,7 @@
 //!     SpherePlane::Circle(c) => assert!((c.radius_squared() - 3.0).abs() < 1e-12),
 //!     other => panic!("{other:?}"),
 //! }
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use core::cmp::Ordering;
@@ -69,7 +69,7 @@ const NAN3: Point3<f64> = Point3::new(f64::NAN, f64::NAN, f64::NAN);
 /// let p = Plane::from_normal_offset(Vector3::z(), 0.5)?;
 /// assert!(matches!(l.meet(&p), LinePlane::Point(x) if (x - Point3::new(0.0, 0.0, 0.5)).norm() < 1e-12));
 /// assert!(matches!(p.meet(&l), LinePlane::Point(_)));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub trait Meet<Rhs> {
     /// The classification enum.
@@ -88,7 +88,7 @@ pub trait Meet<Rhs> {
 /// let x = Line::from_point_direction(Point3::origin(), Vector3::x())?;
 /// let y = Line::from_point_direction(Point3::new(0.0, 0.0, 3.0), Vector3::y())?;
 /// assert!(matches!(line_line(&x, &y), LineLine::Skew { distance } if (distance - 3.0).abs() < 1e-12));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LineLine {
@@ -337,7 +337,7 @@ fn line_distance(a: &Line, b: &Line) -> (f64, f64) {
 /// assert!(matches!(line_line(&a, &c), LineLine::Parallel { .. }));
 /// let d = Line::from_points(Point3::new(5.0, 5.0, 0.0), Point3::new(-3.0, -3.0, 0.0))?;
 /// assert_eq!(line_line(&a, &d), LineLine::Coincident);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn line_line(a: &Line, b: &Line) -> LineLine {
     let kind = decide(
@@ -379,7 +379,7 @@ pub fn line_line(a: &Line, b: &Line) -> LineLine {
 /// assert!(matches!(line_plane(&l, &p), LinePlane::Parallel { distance } if distance == 1.0));
 /// let m = Line::from_point_direction(Point3::new(0.0, 0.0, 1.0), Vector3::y())?;
 /// assert_eq!(line_plane(&m, &p), LinePlane::Contained);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn line_plane(l: &Line, p: &Plane) -> LinePlane {
     let kind = decide(
@@ -415,7 +415,7 @@ pub fn line_plane(l: &Line, p: &Plane) -> LinePlane {
 /// }
 /// let far = Line::from_point_direction(Point3::new(0.0, 0.0, 1.5), Vector3::x())?;
 /// assert_eq!(line_sphere(&far, &s), LineSphere::Disjoint);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn line_sphere(l: &Line, s: &Sphere) -> LineSphere {
     let kind = decide(
@@ -457,7 +457,7 @@ pub fn line_sphere(l: &Line, s: &Sphere) -> LineSphere {
 /// }
 /// let c = Plane::from_normal_offset(-Vector3::z() * 3.0, -6.0)?; // z = 2
 /// assert!(matches!(plane_plane(&a, &c), PlanePlane::Parallel { distance } if distance == 2.0));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn plane_plane(a: &Plane, b: &Plane) -> PlanePlane {
     let kind = decide(
@@ -492,7 +492,7 @@ pub fn plane_plane(a: &Plane, b: &Plane) -> PlanePlane {
 /// let s = Sphere::from_centre_radius(Point3::new(0.0, 0.0, 1.0), 1.0)?;
 /// let p = Plane::from_normal_offset(Vector3::z(), 0.0)?;
 /// assert!(matches!(sphere_plane(&s, &p), SpherePlane::Tangent(t) if t.coords.norm() < 1e-12));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn sphere_plane(s: &Sphere, p: &Plane) -> SpherePlane {
     let kind = decide(
@@ -519,7 +519,7 @@ pub fn sphere_plane(s: &Sphere, p: &Plane) -> SpherePlane {
 /// assert!(matches!(sphere_sphere(&a, &b), SphereSphere::TangentExternal(p) if (p - Point3::new(1.0, 0.0, 0.0)).norm() < 1e-12));
 /// let c = Sphere::from_centre_radius(Point3::new(0.1, 0.0, 0.0), 0.5)?;
 /// assert_eq!(sphere_sphere(&a, &c), SphereSphere::Nested);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn sphere_sphere(a: &Sphere, b: &Sphere) -> SphereSphere {
     let kind = decide(
@@ -579,7 +579,7 @@ meet_impl!(Sphere, Sphere, SphereSphere, sphere_sphere, straight);
 /// assert!(sphere_sphere_filtered(&a, &b)); // a transversal circle: decided in f64
 /// let c = Sphere::from_centre_radius(Point3::new(2.0, 0.0, 0.0), 1.0)?;
 /// assert!(!sphere_sphere_filtered(&a, &c)); // tangency: needs the exact path
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn sphere_sphere_filtered(a: &Sphere, b: &Sphere) -> bool {
     ss_kind::<ErrF64>(&a.ipns_in(), &b.ipns_in()).is_some()

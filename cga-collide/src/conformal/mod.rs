@@ -44,7 +44,7 @@
 //! let s = Sphere::from_centre_radius(Point3::origin(), 1.0)?;
 //! let l = Line::from_point_direction(Point3::new(0.0, 1.0, 0.0), Vector3::x())?; // touches s
 //! assert!(matches!(line_sphere(&l, &s), LineSphere::Tangent(p) if (p - Point3::new(0.0, 1.0, 0.0)).norm() < 1e-12));
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 //!
 //! # API tour
@@ -88,7 +88,7 @@
 //! // Outer ↔ inner forms (dual(A) = A I⁻¹) and back to Euclidean data.
 //! let p2 = Plane::from_blade(*p.blade())?;
 //! assert_eq!((p2.normal(), p2.offset()), (Vector3::z(), 1.0));
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 mod blades;

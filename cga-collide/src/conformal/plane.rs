@@ -6,7 +6,7 @@ use ga_core::scalar::Rational;
 use nalgebra::{Point3, Vector3};
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 use crate::exact::{all_zero, decide, CertifiedScalar, ErrF64};
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,7 +28,7 @@ pub(crate) enum PlaneDef {
 /// assert_eq!(q.normal(), Vector3::z()); // (c − a) × (b − a)
 /// assert!(q.contains(&Point3::new(5.0, -2.0, 3.0)));
 /// assert!(Plane::from_points(Point3::origin(), Point3::new(1.0, 1.0, 1.0), Point3::new(2.0, 2.0, 2.0)).is_err());
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Plane {
@@ -43,7 +43,7 @@ impl Plane {
         a: Point3<f64>,
         b: Point3<f64>,
         c: Point3<f64>,
-    ) -> Result<Self, GeometryError> {
+    ) -> Result<Self, Error> {
         const C: &str = "conformal::Plane::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;
@@ -61,7 +61,7 @@ impl Plane {
     }
     /// The plane `{x : n·x = d}` with IPNS vector `n + d n_inf`. Fails on non-finite input and
     /// when `n` is zero.
-    pub fn from_normal_offset(n: Vector3<f64>, d: f64) -> Result<Self, GeometryError> {
+    pub fn from_normal_offset(n: Vector3<f64>, d: f64) -> Result<Self, Error> {
         const C: &str = "conformal::Plane::from_normal_offset";
         finite3(C, ["n.x", "n.y", "n.z"], &n)?;
         finite(C, "d", d)?;
@@ -73,7 +73,7 @@ impl Plane {
     /// The plane of an IPNS vector `n + d n_inf` (any nonzero multiple): the plane built from
     /// the `f64` normal and offset read from it. Fails on non-finite coefficients, a zero
     /// normal part, or a vector that is not a plane (`−X·n_inf ≠ 0`: a sphere or point).
-    pub fn from_ipns(v: Vector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(v: Vector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Plane::from_ipns";
         finite_blade(C, v)?;
         if v.e4 != v.e5 {
@@ -86,9 +86,9 @@ impl Plane {
             .map_err(|_| degenerate(C, "the normal part is zero"))
     }
     /// The plane of an OPNS quadvector (`from_ipns(dual(Π))`).
-    pub fn from_blade(q: Quadvector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(q: Quadvector<f64>) -> Result<Self, Error> {
         Plane::from_ipns(q.dual()).map_err(|e| match e {
-            GeometryError::Degenerate { reason, .. } => {
+            Error::Degenerate { reason, .. } => {
                 degenerate("conformal::Plane::from_blade", reason)
             }
             other => other,

@@ -4,7 +4,7 @@ use ga_core::cga::Vector;
 use nalgebra::Point3;
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 
 /// A conformal point `F(x) = 2 up(x)` (grade 1).
 ///
@@ -16,7 +16,7 @@ use crate::error::GeometryError;
 /// assert_eq!(p.blade().e1, 2.0);
 /// assert_eq!(p.blade().e3, 4.0);
 /// assert_eq!(p.position(), Some(Point3::new(1.0, 0.0, 2.0)));
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Point {
@@ -25,7 +25,7 @@ pub struct Point {
 
 impl Point {
     /// The conformal point of `x`; fails on a non-finite coordinate.
-    pub fn new(x: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn new(x: Point3<f64>) -> Result<Self, Error> {
         finite3("conformal::Point::new", ["x.x", "x.y", "x.z"], &x.coords)?;
         Ok(Point {
             blade: embed::<f64>(&x),
@@ -42,9 +42,9 @@ impl Point {
     /// let p = Point::from_blade(up(&Point3::new(1.0, 2.0, 3.0)) * 5.0)?;
     /// assert_eq!(p.position(), Some(Point3::new(1.0, 2.0, 3.0)));
     /// assert!(Point::from_blade(n_inf()).is_err());
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_blade(v: Vector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(v: Vector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Point::from_blade";
         finite_blade(C, v)?;
         let x = down(&v).ok_or_else(|| degenerate(C, "the weight −X·n_inf is zero"))?;

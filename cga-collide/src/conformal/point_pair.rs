@@ -5,7 +5,7 @@ use ga_core::prelude::*;
 use nalgebra::Point3;
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 
 /// A point pair, OPNS blade `T = P1 ∧ P2` (grade 2).
 ///
@@ -21,7 +21,7 @@ use crate::error::GeometryError;
 /// assert!((p - a).norm() < 1e-12 && (q - b).norm() < 1e-12);
 /// assert!((t.centre() - Point3::new(2.0, 2.0, 2.0)).norm() < 1e-12);
 /// assert!((t.radius_squared() - 2.0).abs() < 1e-12);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PointPair {
@@ -30,7 +30,7 @@ pub struct PointPair {
 
 impl PointPair {
     /// The pair `{a, b}`. Fails on non-finite coordinates and when `a == b`.
-    pub fn from_points(a: Point3<f64>, b: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn from_points(a: Point3<f64>, b: Point3<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::PointPair::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;
@@ -52,9 +52,9 @@ impl PointPair {
     /// assert_eq!(PointPair::from_ipns(t.ipns())?, t);
     /// let f = FlatPoint::new(Point3::origin())?;
     /// assert!(PointPair::from_blade(*f.blade()).is_err());
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(blade: Bivector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::PointPair::from_blade";
         finite_blade(C, blade)?;
         if coeffs(blade.wedge(&n_inf::<f64>()))
@@ -69,7 +69,7 @@ impl PointPair {
         Ok(PointPair { blade })
     }
     /// The point pair of an IPNS trivector (`from_blade(undual(T*))`).
-    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(t: Trivector<f64>) -> Result<Self, Error> {
         PointPair::from_blade(t.undual())
     }
     pub(crate) fn from_blade_unchecked(blade: Bivector<f64>) -> Self {

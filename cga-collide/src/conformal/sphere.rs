@@ -8,7 +8,7 @@ use ga_core::scalar::Rational;
 use nalgebra::Point3;
 
 use super::blades::*;
-use crate::error::GeometryError;
+use crate::error::Error;
 use crate::exact::{decide, CertifiedScalar, ErrF64};
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,7 +41,7 @@ pub(crate) enum SphereDef {
 /// // Four coplanar points define a plane, not a sphere:
 /// assert!(Sphere::from_points([Point3::origin(), Point3::new(1.0, 0.0, 0.0),
 ///     Point3::new(0.0, 1.0, 0.0), Point3::new(5.0, 7.0, 0.0)]).is_err());
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sphere {
@@ -53,7 +53,7 @@ impl Sphere {
     /// The sphere through four points: `F(a) ∧ F(b) ∧ F(c) ∧ F(d)`. Fails on non-finite
     /// coordinates and (exactly) when the points are coplanar (they then span a plane, or
     /// nothing if they are concyclic or coincide).
-    pub fn from_points(p: [Point3<f64>; 4]) -> Result<Self, GeometryError> {
+    pub fn from_points(p: [Point3<f64>; 4]) -> Result<Self, Error> {
         const C: &str = "conformal::Sphere::from_points";
         const NAMES: [[&str; 3]; 4] = [
             ["p[0].x", "p[0].y", "p[0].z"],
@@ -86,7 +86,7 @@ impl Sphere {
     }
     /// The sphere of centre `c` and radius `r ≥ 0` (radius `0`: the point sphere `F(c)`).
     /// Fails on non-finite input and a negative radius.
-    pub fn from_centre_radius(c: Point3<f64>, r: f64) -> Result<Self, GeometryError> {
+    pub fn from_centre_radius(c: Point3<f64>, r: f64) -> Result<Self, Error> {
         const C: &str = "conformal::Sphere::from_centre_radius";
         finite3(C, ["c.x", "c.y", "c.z"], &c.coords)?;
         finite(C, "r", r)?;
@@ -97,7 +97,7 @@ impl Sphere {
     }
     /// The sphere of centre `c` and squared radius `rho` of any sign (`rho < 0`: an imaginary
     /// sphere). Fails on non-finite input.
-    pub fn from_centre_squared_radius(c: Point3<f64>, rho: f64) -> Result<Self, GeometryError> {
+    pub fn from_centre_squared_radius(c: Point3<f64>, rho: f64) -> Result<Self, Error> {
         const C: &str = "conformal::Sphere::from_centre_squared_radius";
         finite3(C, ["c.x", "c.y", "c.z"], &c.coords)?;
         finite(C, "rho", rho)?;
@@ -106,7 +106,7 @@ impl Sphere {
     /// The sphere of an IPNS vector (any nonzero multiple of `up(c) − ½ρ n_inf`): built from
     /// the `f64` centre and squared radius read from it. Fails on non-finite coefficients or
     /// results and on a zero weight (a plane).
-    pub fn from_ipns(v: Vector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_ipns(v: Vector<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Sphere::from_ipns";
         finite_blade(C, v)?;
         let w = -v.scalar_product(&n_inf::<f64>());
@@ -125,9 +125,9 @@ impl Sphere {
         Sphere::from_centre_squared_radius(c, rho)
     }
     /// The sphere of an OPNS quadvector (`from_ipns(dual(S))`).
-    pub fn from_blade(q: Quadvector<f64>) -> Result<Self, GeometryError> {
+    pub fn from_blade(q: Quadvector<f64>) -> Result<Self, Error> {
         Sphere::from_ipns(q.dual()).map_err(|e| match e {
-            GeometryError::Degenerate { reason, .. } => {
+            Error::Degenerate { reason, .. } => {
                 degenerate("conformal::Sphere::from_blade", reason)
             }
             other => other,
@@ -235,7 +235,7 @@ impl Sphere {
     /// assert_eq!(s.side(&Point3::new(0.5, 0.5, 0.5)), Ordering::Greater);
     /// assert_eq!(s.side(&Point3::new(0.0, -1.0, 0.0)), Ordering::Equal);
     /// assert_eq!(s.side(&Point3::new(0.0, 0.0, 1.0 + f64::EPSILON)), Ordering::Less);
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn side(&self, x: &Point3<f64>) -> Ordering {
         if !x.iter().all(|c| c.is_finite()) {

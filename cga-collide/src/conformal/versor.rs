@@ -15,7 +15,7 @@
 //! let p = Point::new(Point3::new(1.0, 0.0, 0.0))?;
 //! let q = p.transform(&v)?.position().unwrap();
 //! assert!((q - iso * Point3::new(1.0, 0.0, 0.0)).norm() < 1e-12); // (1, 3, 3)
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use ga_core::cga::{Even, Vector};
@@ -23,7 +23,7 @@ use ga_core::prelude::*;
 use nalgebra::{Isometry3, Point3, Unit, UnitQuaternion, Vector3};
 
 use super::{finite, finite3, Circle, FlatPoint, Line, Plane, Point, PointPair, Sphere};
-use crate::error::GeometryError;
+use crate::error::Error;
 
 /// An even versor of Cl(4,1) with `V Ṽ = 1`: a composition of translations, rotations and
 /// uniform scalings.
@@ -36,7 +36,7 @@ use crate::error::GeometryError;
 /// let v = t.then(&d); // first translate, then scale by 2 about the origin
 /// let p = Point::new(Point3::new(1.0, 1.0, 1.0))?.transform(&v)?;
 /// assert!((p.position().unwrap() - Point3::new(4.0, 2.0, 2.0)).norm() < 1e-12);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Versor {
@@ -57,7 +57,7 @@ impl Versor {
         Versor { even }
     }
     /// The translator `T = 1 + ½ n_inf t` (the thesis's (II.33)): `x ↦ x + t`.
-    pub fn translator(t: Vector3<f64>) -> Result<Self, GeometryError> {
+    pub fn translator(t: Vector3<f64>) -> Result<Self, Error> {
         finite3("conformal::Versor::translator", ["t.x", "t.y", "t.z"], &t)?;
         let nt = Even::from(super::n_inf::<f64>() * Vector::from(t));
         Ok(Versor {
@@ -67,7 +67,7 @@ impl Versor {
     /// The rotor `R = cos(θ/2) − sin(θ/2) B` (the thesis's (II.38)), `B` the unit bivector dual
     /// to `axis`: the right-handed rotation by `angle` radians about `axis` through the origin.
     /// Fails on non-finite input and a zero axis.
-    pub fn rotor(axis: Vector3<f64>, angle: f64) -> Result<Self, GeometryError> {
+    pub fn rotor(axis: Vector3<f64>, angle: f64) -> Result<Self, Error> {
         const C: &str = "conformal::Versor::rotor";
         finite3(C, ["axis.x", "axis.y", "axis.z"], &axis)?;
         finite(C, "angle", angle)?;
@@ -79,7 +79,7 @@ impl Versor {
     }
     /// The dilator `D = cosh(α/2) + sinh(α/2) e45` with `α = −ln(factor)` (the thesis's (II.43)):
     /// `x ↦ factor · x` about the origin. Fails unless `factor` is finite and positive.
-    pub fn dilator(factor: f64) -> Result<Self, GeometryError> {
+    pub fn dilator(factor: f64) -> Result<Self, Error> {
         const C: &str = "conformal::Versor::dilator";
         finite(C, "factor", factor)?;
         if factor <= 0.0 {
@@ -92,7 +92,7 @@ impl Versor {
         Ok(Versor { even })
     }
     /// The dilator about `centre`: `T_c D T_{−c}`.
-    pub fn dilator_about(centre: Point3<f64>, factor: f64) -> Result<Self, GeometryError> {
+    pub fn dilator_about(centre: Point3<f64>, factor: f64) -> Result<Self, Error> {
         let to = Versor::translator(-centre.coords)?;
         let back = Versor::translator(centre.coords)?;
         Ok(to.then(&Versor::dilator(factor)?).then(&back))
@@ -144,7 +144,7 @@ impl From<Isometry3<f64>> for Versor {
 /// let mirror = Reflection::new(&Plane::from_normal_offset(Vector3::x(), 1.0)?); // x = 1
 /// let p = Point::new(Point3::new(3.0, 2.0, 1.0))?.reflect(&mirror)?;
 /// assert!((p.position().unwrap() - Point3::new(-1.0, 2.0, 1.0)).norm() < 1e-12);
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reflection {
@@ -178,9 +178,9 @@ pub trait Transform: Sized {
     /// let l = Line::from_point_direction(Point3::origin(), Vector3::x())?;
     /// let m = l.transform(&Versor::translator(Vector3::new(0.0, 5.0, 0.0))?)?;
     /// assert!((m.support_point() - Point3::new(0.0, 5.0, 0.0)).norm() < 1e-12);
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError>;
+    fn transform(&self, v: &Versor) -> Result<Self, Error>;
     /// `(−1)^k π X π` for a grade-`k` blade `X`.
     ///
     /// ```
@@ -189,54 +189,54 @@ pub trait Transform: Sized {
     /// let m = Reflection::new(&Plane::from_normal_offset(Vector3::z(), 0.0)?);
     /// let s = Sphere::from_centre_radius(Point3::new(0.0, 0.0, 2.0), 1.0)?.reflect(&m)?;
     /// assert!((s.centre() - Point3::new(0.0, 0.0, -2.0)).norm() < 1e-12);
-    /// # Ok::<(), cga_collide::GeometryError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError>;
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error>;
 }
 
 impl Transform for Point {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         Point::from_blade(v.even.sandwich_unit(self.blade()))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         Point::from_blade(-r.plane.sandwich_unit(self.blade()))
     }
 }
 
 impl Transform for Line {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         Line::from_blade(v.even.sandwich_unit(self.blade()))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         Line::from_blade(-r.plane.sandwich_unit(self.blade()))
     }
 }
 
 impl Transform for Plane {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         Plane::from_ipns(v.even.sandwich_unit(&self.ipns()))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         Plane::from_ipns(-r.plane.sandwich_unit(&self.ipns()))
     }
 }
 
 impl Transform for Sphere {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         Sphere::from_ipns(v.even.sandwich_unit(&self.ipns()))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         Sphere::from_ipns(-r.plane.sandwich_unit(&self.ipns()))
     }
 }
 
 impl Transform for Circle {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         let b = v.even.sandwich_unit(self.blade());
         super::finite_blade("conformal::Circle::transform", b)?;
         Ok(Circle::from_blade_unchecked(b))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         let b = -r.plane.sandwich_unit(self.blade());
         super::finite_blade("conformal::Circle::reflect", b)?;
         Ok(Circle::from_blade_unchecked(b))
@@ -244,12 +244,12 @@ impl Transform for Circle {
 }
 
 impl Transform for PointPair {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         let b = v.even.sandwich_unit(self.blade());
         super::finite_blade("conformal::PointPair::transform", b)?;
         Ok(PointPair::from_blade_unchecked(b))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         let b = r.plane.sandwich_unit(self.blade());
         super::finite_blade("conformal::PointPair::reflect", b)?;
         Ok(PointPair::from_blade_unchecked(b))
@@ -257,12 +257,12 @@ impl Transform for PointPair {
 }
 
 impl Transform for FlatPoint {
-    fn transform(&self, v: &Versor) -> Result<Self, GeometryError> {
+    fn transform(&self, v: &Versor) -> Result<Self, Error> {
         let b = v.even.sandwich_unit(self.blade());
         super::finite_blade("conformal::FlatPoint::transform", b)?;
         Ok(FlatPoint::from_blade_unchecked(b))
     }
-    fn reflect(&self, r: &Reflection) -> Result<Self, GeometryError> {
+    fn reflect(&self, r: &Reflection) -> Result<Self, Error> {
         let b = r.plane.sandwich_unit(self.blade());
         super::finite_blade("conformal::FlatPoint::reflect", b)?;
         Ok(FlatPoint::from_blade_unchecked(b))

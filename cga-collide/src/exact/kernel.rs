@@ -17,6 +17,7 @@
 //! [`FloatKernel`] evaluates the same code on plain `f64` and believes the result: it is the
 //! "no exact fall-back" variant used to measure what rounding costs.
 
+use crate::exact::vector::{cross, sub};
 use core::cmp::Ordering;
 
 use super::sign::slow_sign;
@@ -92,19 +93,7 @@ impl Kernel for FloatKernel {
     }
 }
 
-#[inline(always)]
-fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
 
-#[inline(always)]
-fn cross(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {
-    [
-        u[1] * v[2] - u[2] * v[1],
-        u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0],
-    ]
-}
 
 #[inline(always)]
 fn sign_of(x: f64) -> Ordering {

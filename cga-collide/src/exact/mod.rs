@@ -25,6 +25,7 @@ mod certified;
 mod kernel;
 pub mod predicates;
 mod sign;
+pub(crate) mod vector;
 
 pub use balls::{ball_inside, balls_meet, balls_meet_exact};
 pub use bounded_f64::ErrF64;

@@ -13,6 +13,7 @@
 //! that one of them is the origin (exact in the rational evaluation, and it keeps the `f64`
 //! error bounds small: the conformal embedding is not translation invariant in `f64`).
 
+use crate::exact::vector::{cross, dot, sub};
 use ga_core::cga::{self, Vector};
 use ga_core::prelude::*;
 
@@ -25,28 +26,8 @@ fn v3<R: Ring>(x: &[R], i: usize) -> V3<R> {
     [x[i].clone(), x[i + 1].clone(), x[i + 2].clone()]
 }
 
-#[inline(always)]
-fn sub<R: Ring>(a: &V3<R>, b: &V3<R>) -> V3<R> {
-    [
-        a[0].clone() - b[0].clone(),
-        a[1].clone() - b[1].clone(),
-        a[2].clone() - b[2].clone(),
-    ]
-}
 
-#[inline(always)]
-fn dot<R: Ring>(a: &V3<R>, b: &V3<R>) -> R {
-    a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone() + a[2].clone() * b[2].clone()
-}
 
-#[inline(always)]
-fn cross<R: Ring>(u: &V3<R>, v: &V3<R>) -> V3<R> {
-    [
-        u[1].clone() * v[2].clone() - u[2].clone() * v[1].clone(),
-        u[2].clone() * v[0].clone() - u[0].clone() * v[2].clone(),
-        u[0].clone() * v[1].clone() - u[1].clone() * v[0].clone(),
-    ]
-}
 
 /// `2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` as a generated [`cga::Vector`].
 #[inline(always)]

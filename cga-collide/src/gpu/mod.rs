@@ -504,7 +504,7 @@ impl Device {
             .collect();
         let tri_data: Vec<[f64; 9]> = (0..n_tri)
             .map(|j| {
-                let [a, b, c] = mesh.triangle(j);
+                let [a, b, c] = mesh.corners(j as u32);
                 [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z]
             })
             .collect();
@@ -874,7 +874,7 @@ impl Device {
 
 /// Triangle `j` of a mesh as an exact-test shape.
 fn triangle(mesh: &TriMesh, j: u32) -> Triangle {
-    let [a, b, c] = mesh.triangle(j as usize);
+    let [a, b, c] = mesh.corners(j);
     // TriMesh vertices are finite, so this cannot fail.
     Triangle::new(a, b, c).unwrap_or_else(|_| unreachable!("TriMesh vertices are finite"))
 }

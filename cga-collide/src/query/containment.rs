@@ -30,7 +30,7 @@ use crate::shape::{Segment, Triangle};
 /// assert!(point_in_solid(tris(), &Point3::new(0.5, 0.5, 0.5)));
 /// assert!(point_in_solid(tris(), &Point3::new(1.0, 0.5, 0.5))); // on the surface
 /// assert!(!point_in_solid(tris(), &Point3::new(1.5, 0.5, 0.5)));
-/// # Ok::<(), cga_collide::mesh::MeshError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn point_in_solid<I>(triangles: I, p: &Point3<f64>) -> bool
 where

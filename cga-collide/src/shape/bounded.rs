@@ -12,16 +12,16 @@
 
 use nalgebra::Point3;
 
-use crate::error::GeometryError;
+use crate::error::Error;
 
 fn check_point(
     shape: &'static str,
     argument: &'static str,
     p: &Point3<f64>,
-) -> Result<(), GeometryError> {
+) -> Result<(), Error> {
     for (axis, value) in ["x", "y", "z"].into_iter().zip(p.coords.iter()) {
         if !value.is_finite() {
-            return Err(GeometryError::NonFiniteCoordinate {
+            return Err(Error::NonFiniteCoordinate {
                 shape,
                 argument,
                 axis,
@@ -32,12 +32,12 @@ fn check_point(
     Ok(())
 }
 
-fn check_radius(shape: &'static str, r: f64) -> Result<(), GeometryError> {
+fn check_radius(shape: &'static str, r: f64) -> Result<(), Error> {
     if !r.is_finite() {
-        return Err(GeometryError::NonFiniteRadius { shape, value: r });
+        return Err(Error::NonFiniteRadius { shape, value: r });
     }
     if r < 0.0 {
-        return Err(GeometryError::NegativeRadius { shape, value: r });
+        return Err(Error::NegativeRadius { shape, value: r });
     }
     Ok(())
 }
@@ -58,7 +58,7 @@ pub struct Segment {
 
 impl Segment {
     /// The segment `[a, b]`; fails if a coordinate is not finite.
-    pub fn new(a: Point3<f64>, b: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn new(a: Point3<f64>, b: Point3<f64>) -> Result<Self, Error> {
         check_point("Segment", "a", &a)?;
         check_point("Segment", "b", &b)?;
         Ok(Segment { a, b })
@@ -76,11 +76,11 @@ impl Segment {
 /// The closed triangle with three vertices (a segment or point when they are collinear).
 ///
 /// ```
-/// use cga_collide::{nalgebra::Point3, Triangle, GeometryError};
+/// use cga_collide::{nalgebra::Point3, Triangle, Error};
 /// let t = Triangle::new(Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0));
 /// assert!(t.is_ok());
 /// let bad = Triangle::new(Point3::origin(), Point3::origin(), Point3::new(0.0, f64::INFINITY, 0.0));
-/// assert!(matches!(bad, Err(GeometryError::NonFiniteCoordinate { argument: "c", axis: "y", .. })));
+/// assert!(matches!(bad, Err(Error::NonFiniteCoordinate { argument: "c", axis: "y", .. })));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Triangle {
@@ -88,8 +88,15 @@ pub struct Triangle {
 }
 
 impl Triangle {
+    /// A triangle from corners already known to be finite (a [`TriMesh`](crate::TriMesh)'s).
+    #[inline]
+    pub(crate) fn from_finite(v: [Point3<f64>; 3]) -> Triangle {
+        debug_assert!(v.iter().all(|p| p.iter().all(|x| x.is_finite())));
+        Triangle { v }
+    }
+
     /// The triangle `abc`; fails if a coordinate is not finite.
-    pub fn new(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Result<Self, GeometryError> {
+    pub fn new(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Result<Self, Error> {
         check_point("Triangle", "a", &a)?;
         check_point("Triangle", "b", &b)?;
         check_point("Triangle", "c", &c)?;
@@ -106,9 +113,9 @@ impl Triangle {
 /// A triangle strictly inside a sphere does not meet it; use [`Ball`] for the solid.
 ///
 /// ```
-/// use cga_collide::{nalgebra::Point3, Sphere, GeometryError};
+/// use cga_collide::{nalgebra::Point3, Sphere, Error};
 /// assert!(Sphere::new(Point3::origin(), 2.0).is_ok());
-/// assert!(matches!(Sphere::new(Point3::origin(), -1.0), Err(GeometryError::NegativeRadius { .. })));
+/// assert!(matches!(Sphere::new(Point3::origin(), -1.0), Err(Error::NegativeRadius { .. })));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sphere {
@@ -119,7 +126,7 @@ pub struct Sphere {
 impl Sphere {
     /// The sphere of the given centre and radius; fails on non-finite coordinates and on a
     /// negative or non-finite radius. Radius `0` is allowed and denotes the centre point.
-    pub fn new(centre: Point3<f64>, radius: f64) -> Result<Self, GeometryError> {
+    pub fn new(centre: Point3<f64>, radius: f64) -> Result<Self, Error> {
         check_point("Sphere", "centre", &centre)?;
         check_radius("Sphere", radius)?;
         Ok(Sphere { centre, radius })
@@ -137,9 +144,9 @@ impl Sphere {
 /// The closed solid ball with a centre and a radius (a point for radius 0).
 ///
 /// ```
-/// use cga_collide::{nalgebra::Point3, Ball, GeometryError};
+/// use cga_collide::{nalgebra::Point3, Ball, Error};
 /// assert!(Ball::new(Point3::origin(), 0.0).is_ok());
-/// assert!(matches!(Ball::new(Point3::origin(), f64::NAN), Err(GeometryError::NonFiniteRadius { .. })));
+/// assert!(matches!(Ball::new(Point3::origin(), f64::NAN), Err(Error::NonFiniteRadius { .. })));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ball {
@@ -150,7 +157,7 @@ pub struct Ball {
 impl Ball {
     /// The ball of the given centre and radius; fails on non-finite coordinates and on a
     /// negative or non-finite radius. Radius `0` is allowed and denotes the centre point.
-    pub fn new(centre: Point3<f64>, radius: f64) -> Result<Self, GeometryError> {
+    pub fn new(centre: Point3<f64>, radius: f64) -> Result<Self, Error> {
         check_point("Ball", "centre", &centre)?;
         check_radius("Ball", radius)?;
         Ok(Ball { centre, radius })

@@ -3,4 +3,5 @@
 //! code depends on it.
 
 pub mod adversarial;
+pub mod baseline;
 pub mod oracle;

@@ -10,6 +10,7 @@
 //! inside their face. Everything is `BigRational`; it is slow (tens of microseconds to
 //! milliseconds per query) and meant for tests only.
 
+use crate::exact::vector::{dot, sub};
 use ga_core::scalar::{rational_from_f64, Rational, Ring};
 use nalgebra::Point3;
 use num_traits::Signed;
@@ -101,13 +102,7 @@ pub fn hulls_intersect(a: &[Point3<f64>], b: &[Point3<f64>]) -> bool {
     false
 }
 
-fn sub(a: &[Rational; 3], b: &[Rational; 3]) -> [Rational; 3] {
-    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
-}
 
-fn dot(a: &[Rational; 3], b: &[Rational; 3]) -> Rational {
-    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
-}
 
 /// Squared distances from `c` to the convex hull of `pts`: (minimum, maximum), exactly.
 pub fn hull_distance2(pts: &[Point3<f64>], c: &Point3<f64>) -> (Rational, Rational) {

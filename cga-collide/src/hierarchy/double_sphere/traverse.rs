@@ -50,7 +50,7 @@
 use nalgebra::{Isometry3, Point3};
 
 use super::DoubleSphereTree;
-use crate::query::point_in_solid;
+use crate::query::containment::point_in_solid;
 use crate::{Intersects, Triangle};
 
 /// How [`collide`] reached its answer.

@@ -13,7 +13,7 @@
 //! # Cells, exactly
 //! A cell (closed box) is
 //! * **partial** when a triangle of the mesh meets it ([`triangle_meets_box`], exact;
-//!   candidates from the mesh's [`Bvh`](crate::bvh::Bvh));
+//!   candidates from the mesh's [`Bvh`](crate::bounding::Bvh));
 //! * otherwise wholly inside or wholly outside the solid (the cell is connected and no surface
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
 //!   **empty**.
@@ -51,8 +51,8 @@ use thiserror::Error;
 
 use super::tribox::triangle_meets_box;
 use super::{CellState, SphereTree};
-use crate::bvh::Aabb;
-use crate::query::{Collider, Mode};
+use crate::bounding::Aabb;
+use crate::collider::Collider;
 
 /// The largest depth accepted (8^16 cells is far beyond memory anyway).
 pub const MAX_DEPTH: u32 = 16;
@@ -247,7 +247,7 @@ fn classify(
             |nb| nb.overlaps(b),
             |t| {
                 work.tri_tests += 1;
-                let [p, q, r] = mesh.triangle(t as usize);
+                let [p, q, r] = mesh.corners(t);
                 let tri = [[p.x, p.y, p.z], [q.x, q.y, q.z], [r.x, r.y, r.z]];
                 if triangle_meets_box(&tri, &b.min, &b.max) {
                     ControlFlow::Break(())
@@ -262,7 +262,7 @@ fn classify(
     }
     work.point_queries += 1;
     collider
-        .contains_point(&Point3::from(*centre), Mode::Bvh)
+        .contains_point(&Point3::from(*centre))
         .then_some(CellState::Full)
 }
 

@@ -97,7 +97,7 @@ pub fn triangle_meets_box(t: &[[f64; 3]; 3], lo: &[f64; 3], hi: &[f64; 3]) -> bo
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bvh::Aabb;
+    use crate::bounding::Aabb;
     use crate::{Intersects, Segment, TriMesh, Triangle};
     use nalgebra::Point3;
     use proptest::prelude::*;

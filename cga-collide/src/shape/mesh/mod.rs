@@ -14,11 +14,10 @@
 //! let off = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
 //! let quad = TriMesh::from_bytes(off.as_bytes(), MeshFormat::Off, "quad.off")?;
 //! assert_eq!(quad.triangles(), &[[0, 1, 2], [0, 2, 3]]); // fan triangulation
-//! # Ok::<(), cga_collide::shape::mesh::MeshError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 mod builtin;
-mod error;
 mod obj;
 mod off;
 mod ply;
@@ -31,7 +30,10 @@ use std::path::Path;
 
 use nalgebra::{Isometry3, Point3};
 
-pub use error::{Location, MeshError};
+use crate::error::Error;
+use crate::Triangle;
+
+pub use crate::error::Location;
 
 /// The file formats the loaders understand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -83,7 +85,7 @@ pub struct TriMesh {
 
 impl TriMesh {
     /// Builds a mesh, checking the invariants (non-empty, finite, indices in range).
-    pub fn new(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Result<Self, MeshError> {
+    pub fn new(vertices: Vec<Point3<f64>>, triangles: Vec<[u32; 3]>) -> Result<Self, Error> {
         Self::checked("<memory>", vertices, triangles)
     }
 
@@ -91,14 +93,14 @@ impl TriMesh {
         file: &str,
         vertices: Vec<Point3<f64>>,
         triangles: Vec<[u32; 3]>,
-    ) -> Result<Self, MeshError> {
+    ) -> Result<Self, Error> {
         if triangles.is_empty() {
-            return Err(MeshError::Empty {
+            return Err(Error::Empty {
                 file: file.to_owned(),
             });
         }
         if vertices.len() > u32::MAX as usize {
-            return Err(MeshError::Syntax {
+            return Err(Error::Syntax {
                 at: Location::file(file),
                 message: format!(
                     "{} vertices is more than u32 indices address",
@@ -108,7 +110,7 @@ impl TriMesh {
         }
         for (i, v) in vertices.iter().enumerate() {
             if let Some(&value) = v.coords.iter().find(|c| !c.is_finite()) {
-                return Err(MeshError::NonFinite {
+                return Err(Error::NonFinite {
                     at: Location::file(file),
                     vertex: i,
                     value,
@@ -117,7 +119,7 @@ impl TriMesh {
         }
         for (f, t) in triangles.iter().enumerate() {
             if let Some(&index) = t.iter().find(|&&i| i as usize >= vertices.len()) {
-                return Err(MeshError::IndexOutOfRange {
+                return Err(Error::IndexOutOfRange {
                     at: Location::file(file),
                     face: f,
                     index: i64::from(index),
@@ -133,9 +135,9 @@ impl TriMesh {
 
     /// Reads a mesh, choosing the format from the extension (`.obj`, `.off`, `.ply`, `.stl`,
     /// each optionally followed by `.gz`).
-    pub fn load(path: impl AsRef<Path>) -> Result<Self, MeshError> {
+    pub fn load(path: impl AsRef<Path>) -> Result<Self, Error> {
         let path = path.as_ref();
-        let format = MeshFormat::from_path(path).ok_or_else(|| MeshError::UnknownFormat {
+        let format = MeshFormat::from_path(path).ok_or_else(|| Error::UnknownFormat {
             file: path.display().to_string(),
             extension: path
                 .extension()
@@ -146,26 +148,28 @@ impl TriMesh {
     }
 
     /// Reads a mesh in the given format (gzip-compressed data is recognised by its magic bytes).
-    pub fn load_as(path: impl AsRef<Path>, format: MeshFormat) -> Result<Self, MeshError> {
+    pub fn load_as(path: impl AsRef<Path>, format: MeshFormat) -> Result<Self, Error> {
         let path = path.as_ref();
         let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|error| MeshError::Io {
+        let bytes = std::fs::read(path).map_err(|error| Error::Io {
+            kind: error.kind(),
+            message: error.to_string(),
             file: name.clone(),
-            error,
         })?;
         Self::from_bytes(&bytes, format, &name)
     }
 
     /// Parses a mesh from bytes in memory; `name` is used in error messages.
     /// Gzip-compressed data (magic bytes `1f 8b`) is decompressed first.
-    pub fn from_bytes(bytes: &[u8], format: MeshFormat, name: &str) -> Result<Self, MeshError> {
+    pub fn from_bytes(bytes: &[u8], format: MeshFormat, name: &str) -> Result<Self, Error> {
         if bytes.starts_with(&[0x1f, 0x8b]) {
             let mut plain = Vec::new();
             flate2::read::MultiGzDecoder::new(bytes)
                 .read_to_end(&mut plain)
-                .map_err(|error| MeshError::Io {
+                .map_err(|error| Error::Io {
+            kind: error.kind(),
+            message: error.to_string(),
                     file: name.to_owned(),
-                    error,
                 })?;
             return Self::from_bytes(&plain, format, name);
         }
@@ -188,12 +192,12 @@ impl TriMesh {
     /// let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0))?;
     /// assert_eq!((cube.vertices().len(), cube.num_triangles()), (8, 12));
     /// assert!(cube.is_closed());
-    /// # Ok::<(), cga_collide::mesh::MeshError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn cuboid(min: Point3<f64>, max: Point3<f64>) -> Result<Self, MeshError> {
+    pub fn cuboid(min: Point3<f64>, max: Point3<f64>) -> Result<Self, Error> {
         if let Some(axis) = (0..3).find(|&k| min[k].partial_cmp(&max[k]).is_none_or(|o| o.is_gt()))
         {
-            return Err(MeshError::InvalidBox {
+            return Err(Error::InvalidBox {
                 axis,
                 min: min[axis],
                 max: max[axis],
@@ -239,8 +243,9 @@ impl TriMesh {
     }
 
     /// The three corners of triangle `i`. Panics if `i` is out of range (like slice indexing).
-    pub fn triangle(&self, i: usize) -> [Point3<f64>; 3] {
-        let [a, b, c] = self.triangles[i];
+    #[inline]
+    pub fn corners(&self, i: u32) -> [Point3<f64>; 3] {
+        let [a, b, c] = self.triangles[i as usize];
         [
             self.vertices[a as usize],
             self.vertices[b as usize],
@@ -248,45 +253,88 @@ impl TriMesh {
         ]
     }
 
+    /// Triangle `i` as an exact-test shape. Panics if `i` is out of range (like slice
+    /// indexing).
+    #[inline]
+    pub fn triangle(&self, i: u32) -> Triangle {
+        // A mesh's vertices are finite (checked when it was built).
+        Triangle::from_finite(self.corners(i))
+    }
+
     /// Corner-wise minimum and maximum of all vertices.
     pub fn bounds(&self) -> (Point3<f64>, Point3<f64>) {
-        let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
-        let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-        for v in &self.vertices {
-            for k in 0..3 {
-                lo[k] = lo[k].min(v[k]);
-                hi[k] = hi[k].max(v[k]);
-            }
-        }
-        (lo, hi)
+        bounds_of(&self.vertices)
     }
 
     /// The mesh with `iso` applied once, in `f64`, to every vertex. The exact tests are then
     /// exact on the rounded, transformed coordinates (see the module docs).
     ///
     /// Returns an error only if a coordinate overflows to infinity.
-    pub fn transformed(&self, iso: &Isometry3<f64>) -> Result<TriMesh, MeshError> {
+    pub fn transformed(&self, iso: &Isometry3<f64>) -> Result<TriMesh, Error> {
         let vertices = self.vertices.iter().map(|v| iso * v).collect();
         Self::checked("<transformed>", vertices, self.triangles.clone())
     }
 
     /// The mesh scaled uniformly and translated so that its bounding box is centred at the
     /// origin with largest side 1 (the CLI's `--unit`). A mesh whose vertices all coincide is
-    /// only translated.
+    /// only translated. Works for every finite mesh, from subnormal sizes (`1e-320` across) to
+    /// `±1e308`: the result is always finite.
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::Point3, TriMesh};
+    /// let tiny = TriMesh::cuboid(Point3::origin(), Point3::new(1e-320, 1e-320, 1e-320))?;
+    /// let (lo, hi) = tiny.unit().bounds();
+    /// assert_eq!((hi - lo).max(), 1.0);
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
     pub fn unit(&self) -> TriMesh {
         let (lo, hi) = self.bounds();
         let centre = nalgebra::center(&lo, &hi);
         let side = (hi - lo).max();
         let scale = if side > 0.0 { 1.0 / side } else { 1.0 };
-        let vertices = self
+        let vertices: Vec<Point3<f64>> = self
             .vertices
             .iter()
             .map(|v| Point3::from((v - centre) * scale))
             .collect();
+        let vertices = if side.is_normal() && vertices.iter().all(|v| v.iter().all(|x| x.is_finite())) {
+            vertices
+        } else {
+            self.unit_by_powers_of_two()
+        };
         TriMesh {
             vertices,
             triangles: self.triangles.clone(),
         }
+    }
+
+    /// [`unit`](Self::unit) for meshes where the direct formula over- or underflows (sides
+    /// beyond `f64`'s range, or subnormal): exact power-of-two scalings first bring the
+    /// coordinates, then their offsets from the centre, near 1, where the same formula is safe.
+    fn unit_by_powers_of_two(&self) -> Vec<Point3<f64>> {
+        let magnitude = |vs: &[Point3<f64>]| {
+            vs.iter()
+                .flat_map(|v| v.iter().map(|x| x.abs()))
+                .fold(0.0f64, f64::max)
+        };
+        let near_one = |vs: Vec<Point3<f64>>| {
+            let m = magnitude(&vs);
+            if m == 0.0 {
+                return vs;
+            }
+            let e = -(m.log2().floor() as i32);
+            vs.into_iter()
+                .map(|v| v.map(|x| times_power_of_two(x, e)))
+                .collect()
+        };
+        let scaled = near_one(self.vertices.clone());
+        let (lo, hi) = bounds_of(&scaled);
+        let centre = nalgebra::center(&lo, &hi);
+        let offsets = near_one(scaled.iter().map(|v| Point3::from(v - centre)).collect());
+        let (lo, hi) = bounds_of(&offsets);
+        let side = (hi - lo).max();
+        let scale = if side > 0.0 { 1.0 / side } else { 1.0 };
+        offsets.into_iter().map(|v| v * scale).collect()
     }
 
     /// One step of 1→4 midpoint subdivision: every triangle is split at its edge midpoints
@@ -343,4 +391,27 @@ impl TriMesh {
         }
         mesh
     }
+}
+
+/// `x · 2^e`, exact unless the result leaves `f64`'s range (the steps keep each factor finite).
+fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
+    while e != 0 {
+        let step = e.clamp(-1000, 1000);
+        x *= 2f64.powi(step);
+        e -= step;
+    }
+    x
+}
+
+/// Corner-wise minimum and maximum of points.
+fn bounds_of(points: &[Point3<f64>]) -> (Point3<f64>, Point3<f64>) {
+    let mut lo = Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY);
+    let mut hi = Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for v in points {
+        for k in 0..3 {
+            lo[k] = lo[k].min(v[k]);
+            hi[k] = hi[k].max(v[k]);
+        }
+    }
+    (lo, hi)
 }

@@ -10,7 +10,7 @@ use std::io::{BufRead, Read};
 
 use nalgebra::Point3;
 
-use super::error::{Location, MeshError};
+use crate::error::{Location, Error};
 use super::text::check_finite;
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
@@ -50,7 +50,7 @@ impl BufRead for LineCounter<'_> {
     }
 }
 
-pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
+pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
     let mut reader = LineCounter {
         rest: bytes,
         newlines: 0,
@@ -71,16 +71,16 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         let line = reader.newlines + usize::from(reader.partial);
         let at = Location::line(file, line.max(1));
         match e {
-            tobj::LoadError::PositionParseError => MeshError::BadNumber {
+            tobj::LoadError::PositionParseError => Error::BadNumber {
                 at,
                 token: "(vertex line)".into(),
                 expected: "three decimal coordinates after `v`",
             },
-            tobj::LoadError::FaceVertexOutOfBounds => MeshError::Syntax {
+            tobj::LoadError::FaceVertexOutOfBounds => Error::Syntax {
                 at,
                 message: "face refers to a vertex that does not exist (index out of range)".into(),
             },
-            other => MeshError::Syntax {
+            other => Error::Syntax {
                 at,
                 message: format!("OBJ: {other}"),
             },
@@ -103,14 +103,14 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
             let mut tri = [0u32; 3];
             for (slot, &i) in tri.iter_mut().zip(t) {
                 if i as usize >= count {
-                    return Err(MeshError::IndexOutOfRange {
+                    return Err(Error::IndexOutOfRange {
                         at: Location::file(file),
                         face,
                         index: i64::from(i),
                         vertex_count: count,
                     });
                 }
-                *slot = u32::try_from(base + i as usize).map_err(|_| MeshError::Syntax {
+                *slot = u32::try_from(base + i as usize).map_err(|_| Error::Syntax {
                     at: Location::file(file),
                     message: "too many vertices for u32 indices".into(),
                 })?;

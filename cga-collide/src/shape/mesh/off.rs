@@ -9,19 +9,19 @@
 
 use nalgebra::Point3;
 
-use super::error::{Location, MeshError};
+use crate::error::{Location, Error};
 use super::text::{capacity, check_finite, content_lines, fan, parse_f64, parse_u64};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 
-pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
-    let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Syntax {
+pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
+    let text = std::str::from_utf8(bytes).map_err(|e| Error::Syntax {
         at: Location::byte(file, e.valid_up_to()),
         message: "OFF file is not valid UTF-8 text (binary OFF is not supported)".into(),
     })?;
     let mut lines = content_lines(text);
     let last_line = text.lines().count().max(1);
-    let truncated = |expected: String| MeshError::Truncated {
+    let truncated = |expected: String| Error::Truncated {
         at: Location::line(file, last_line),
         expected,
     };
@@ -33,13 +33,13 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
     let first = line.split_whitespace().next().unwrap_or("");
     if first.ends_with("OFF") {
         if first.len() > 3 && !first.starts_with(['C', 'N', 'S', '4']) {
-            return Err(MeshError::Syntax {
+            return Err(Error::Syntax {
                 at: Location::line(file, line_no),
                 message: format!("unknown OFF header keyword {first:?}"),
             });
         }
         if first.contains('4') || first.contains('n') {
-            return Err(MeshError::Syntax {
+            return Err(Error::Syntax {
                 at: Location::line(file, line_no),
                 message: format!("OFF variant {first:?} (not 3-dimensional) is not supported"),
             });
@@ -54,8 +54,8 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         }
     }
     let mut counts = line.split_whitespace();
-    let mut count = |what: &str| -> Result<u64, MeshError> {
-        let token = counts.next().ok_or_else(|| MeshError::Syntax {
+    let mut count = |what: &str| -> Result<u64, Error> {
+        let token = counts.next().ok_or_else(|| Error::Syntax {
             at: Location::line(file, line_no),
             message: format!("OFF counts line lacks the number of {what}"),
         })?;
@@ -72,7 +72,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         let mut tokens = line.split_whitespace();
         let mut xyz = [0.0; 3];
         for c in &mut xyz {
-            let token = tokens.next().ok_or_else(|| MeshError::Syntax {
+            let token = tokens.next().ok_or_else(|| Error::Syntax {
                 at: Location::line(file, line_no),
                 message: format!("vertex {v} has fewer than 3 coordinates"),
             })?;
@@ -91,20 +91,20 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         let mut tokens = line.split_whitespace();
         let n = parse_u64(tokens.next().unwrap_or(""), file, line_no)?;
         if n < 3 {
-            return Err(MeshError::Syntax {
+            return Err(Error::Syntax {
                 at: Location::line(file, line_no),
                 message: format!("face {f} has {n} vertices (at least 3 needed)"),
             });
         }
         polygon.clear();
         for k in 0..n {
-            let token = tokens.next().ok_or_else(|| MeshError::Syntax {
+            let token = tokens.next().ok_or_else(|| Error::Syntax {
                 at: Location::line(file, line_no),
                 message: format!("face {f} announces {n} vertices but lists {k}"),
             })?;
             let index = parse_u64(token, file, line_no)?;
             if index >= vertices.len() as u64 {
-                return Err(MeshError::IndexOutOfRange {
+                return Err(Error::IndexOutOfRange {
                     at: Location::line(file, line_no),
                     face: f as usize,
                     index: i64::try_from(index).unwrap_or(i64::MAX),

@@ -8,7 +8,7 @@
 
 use nalgebra::Point3;
 
-use super::error::{shorten, Location, MeshError};
+use crate::error::{shorten, Location, Error};
 use super::text::{capacity, check_finite, fan};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
@@ -72,7 +72,7 @@ enum Encoding {
 
 /// Where values come from: ASCII tokens or binary bytes.
 trait Source {
-    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, MeshError>;
+    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, Error>;
     fn location(&self) -> Location;
 }
 
@@ -84,7 +84,7 @@ struct AsciiSource<'a> {
 }
 
 impl Source for AsciiSource<'_> {
-    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, MeshError> {
+    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, Error> {
         let token = loop {
             if let Some(t) = self.tokens.next() {
                 break t;
@@ -95,14 +95,14 @@ impl Source for AsciiSource<'_> {
                     self.tokens = l.split_whitespace();
                 }
                 None => {
-                    return Err(MeshError::Truncated {
+                    return Err(Error::Truncated {
                         at: self.location(),
                         expected: what(),
                     })
                 }
             }
         };
-        let bad = || MeshError::BadNumber {
+        let bad = || Error::BadNumber {
             at: Location::line(self.file, self.line),
             token: shorten(token),
             expected: match ty {
@@ -129,10 +129,10 @@ struct BinarySource<'a> {
 }
 
 impl Source for BinarySource<'_> {
-    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, MeshError> {
+    fn value(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, Error> {
         let n = ty.size();
         let Some(chunk) = self.bytes.get(self.pos..self.pos + n) else {
-            return Err(MeshError::Truncated {
+            return Err(Error::Truncated {
                 at: self.location(),
                 expected: what(),
             });
@@ -160,22 +160,22 @@ impl Source for BinarySource<'_> {
     }
 }
 
-fn syntax(file: &str, line: usize, message: String) -> MeshError {
-    MeshError::Syntax {
+fn syntax(file: &str, line: usize, message: String) -> Error {
+    Error::Syntax {
         at: Location::line(file, line),
         message,
     }
 }
 
 /// Parses the header; returns encoding, elements and the byte offset of the body.
-fn header(bytes: &[u8], file: &str) -> Result<(Encoding, Vec<Element>, usize), MeshError> {
+fn header(bytes: &[u8], file: &str) -> Result<(Encoding, Vec<Element>, usize), Error> {
     let mut pos = 0;
     let mut line_no = 0;
     let mut encoding = None;
     let mut elements: Vec<Element> = Vec::new();
     loop {
         let Some(len) = bytes[pos..].iter().position(|&b| b == b'\n') else {
-            return Err(MeshError::Truncated {
+            return Err(Error::Truncated {
                 at: Location::line(file, line_no + 1),
                 expected: "`end_header`".into(),
             });
@@ -222,7 +222,7 @@ fn header(bytes: &[u8], file: &str) -> Result<(Encoding, Vec<Element>, usize), M
                         "element line needs a name and a count".into(),
                     ));
                 };
-                let count = count.parse::<u64>().map_err(|_| MeshError::BadNumber {
+                let count = count.parse::<u64>().map_err(|_| Error::BadNumber {
                     at: Location::line(file, line_no),
                     token: shorten(count),
                     expected: "a non-negative element count",
@@ -278,12 +278,12 @@ fn header(bytes: &[u8], file: &str) -> Result<(Encoding, Vec<Element>, usize), M
     Ok((encoding, elements, pos))
 }
 
-pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
+pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
     let (encoding, elements, body) = header(bytes, file)?;
     let body_bytes = &bytes[body..];
     match encoding {
         Encoding::Ascii => {
-            let text = std::str::from_utf8(body_bytes).map_err(|e| MeshError::Syntax {
+            let text = std::str::from_utf8(body_bytes).map_err(|e| Error::Syntax {
                 at: Location::byte(file, body + e.valid_up_to()),
                 message: "ASCII PLY body is not UTF-8 text".into(),
             })?;
@@ -313,7 +313,7 @@ fn read_body(
     elements: &[Element],
     file: &str,
     body_len: usize,
-) -> Result<Parsed, MeshError> {
+) -> Result<Parsed, Error> {
     let vertex_count = elements
         .iter()
         .find(|e| e.name == "vertex")
@@ -332,7 +332,7 @@ fn read_body(
                         .properties
                         .iter()
                         .position(|p| matches!(p, Property::Scalar(_, n) if n == axis))
-                        .ok_or_else(|| MeshError::Syntax {
+                        .ok_or_else(|| Error::Syntax {
                             at: Location::file(file),
                             message: format!(
                                 "PLY element `vertex` has no scalar property `{axis}`"
@@ -353,7 +353,7 @@ fn read_body(
             .flatten();
         if element.name == "face" {
             if face_list.is_none() {
-                return Err(MeshError::Syntax {
+                return Err(Error::Syntax {
                     at: Location::file(file),
                     message: "PLY element `face` has no list property `vertex_indices`".into(),
                 });
@@ -379,7 +379,7 @@ fn read_body(
                     Property::List(count_ty, item_ty, _) => {
                         let n = source.value(*count_ty, &what)?;
                         if n < 0.0 {
-                            return Err(MeshError::Syntax {
+                            return Err(Error::Syntax {
                                 at: source.location(),
                                 message: format!(
                                     "{} {item}: negative list length {n}",
@@ -394,7 +394,7 @@ fn read_body(
                             let v = source.value(*item_ty, &what)?;
                             if is_face {
                                 if !(v >= 0.0 && v < vertex_count as f64 && v.fract() == 0.0) {
-                                    return Err(MeshError::IndexOutOfRange {
+                                    return Err(Error::IndexOutOfRange {
                                         at: start.clone(),
                                         face: usize::try_from(item).unwrap_or(usize::MAX),
                                         index: v as i64,
@@ -408,7 +408,7 @@ fn read_body(
                         }
                         if is_face {
                             if polygon.len() < 3 {
-                                return Err(MeshError::Syntax {
+                                return Err(Error::Syntax {
                                     at: start.clone(),
                                     message: format!(
                                         "face {item} has {} vertices (at least 3 needed)",

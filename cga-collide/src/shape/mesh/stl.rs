@@ -9,7 +9,7 @@ use std::collections::HashMap;
 
 use nalgebra::Point3;
 
-use super::error::{Location, MeshError};
+use crate::error::{Location, Error};
 use super::text::{capacity, check_finite, parse_f64};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
@@ -33,7 +33,7 @@ impl Welder {
     }
 }
 
-pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
+pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
     if bytes.len() >= 84 {
         let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
         if bytes.len() as u64 == 84 + 50 * n as u64 {
@@ -48,7 +48,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         return ascii(bytes, file);
     }
     if bytes.len() < 84 {
-        return Err(MeshError::Truncated {
+        return Err(Error::Truncated {
             at: Location::byte(file, bytes.len()),
             expected: "the 84-byte binary STL header".into(),
         });
@@ -56,12 +56,12 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
     let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as u64;
     if (bytes.len() as u64) < 84 + 50 * n {
         let complete = (bytes.len() - 84) / 50;
-        Err(MeshError::Truncated {
+        Err(Error::Truncated {
             at: Location::byte(file, 84 + 50 * complete),
             expected: format!("triangle {complete} of {n} (binary STL, 50 bytes each)"),
         })
     } else {
-        Err(MeshError::Syntax {
+        Err(Error::Syntax {
             at: Location::byte(file, 84 + 50 * n as usize),
             message: format!(
                 "binary STL announces {n} triangles but has {} trailing bytes",
@@ -71,7 +71,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
     }
 }
 
-fn binary(bytes: &[u8], file: &str, n: usize) -> Result<Parsed, MeshError> {
+fn binary(bytes: &[u8], file: &str, n: usize) -> Result<Parsed, Error> {
     let mut welder = Welder::default();
     let mut triangles = Vec::with_capacity(n);
     for t in 0..n {
@@ -100,8 +100,8 @@ fn binary(bytes: &[u8], file: &str, n: usize) -> Result<Parsed, MeshError> {
     Ok((welder.vertices, triangles))
 }
 
-fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
-    let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Syntax {
+fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
+    let text = std::str::from_utf8(bytes).map_err(|e| Error::Syntax {
         at: Location::byte(file, e.valid_up_to()),
         message: "ASCII STL is not UTF-8 text".into(),
     })?;
@@ -118,7 +118,7 @@ fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         match words.next() {
             Some("outer") => {
                 if in_loop {
-                    return Err(MeshError::Syntax {
+                    return Err(Error::Syntax {
                         at: Location::line(file, line_no),
                         message: "`outer loop` inside a loop".into(),
                     });
@@ -128,14 +128,14 @@ fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
             }
             Some("vertex") => {
                 if !in_loop {
-                    return Err(MeshError::Syntax {
+                    return Err(Error::Syntax {
                         at: Location::line(file, line_no),
                         message: "`vertex` outside `outer loop` … `endloop`".into(),
                     });
                 }
                 let mut xyz = [0.0; 3];
                 for x in &mut xyz {
-                    let token = words.next().ok_or_else(|| MeshError::Syntax {
+                    let token = words.next().ok_or_else(|| Error::Syntax {
                         at: Location::line(file, line_no),
                         message: "`vertex` needs three coordinates".into(),
                     })?;
@@ -146,13 +146,13 @@ fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
             }
             Some("endloop") => {
                 if !in_loop {
-                    return Err(MeshError::Syntax {
+                    return Err(Error::Syntax {
                         at: Location::line(file, line_no),
                         message: "`endloop` without `outer loop`".into(),
                     });
                 }
                 if corners.len() < 3 {
-                    return Err(MeshError::Syntax {
+                    return Err(Error::Syntax {
                         at: Location::line(file, line_no),
                         message: format!(
                             "facet {facet} has {} vertices (at least 3 needed)",
@@ -168,7 +168,7 @@ fn ascii(bytes: &[u8], file: &str) -> Result<Parsed, MeshError> {
         }
     }
     if in_loop {
-        return Err(MeshError::Truncated {
+        return Err(Error::Truncated {
             at: Location::line(file, last_line),
             expected: format!("`endloop` of facet {facet}"),
         });

@@ -1,11 +1,11 @@
 //! Small helpers shared by the text parsers.
 
-use super::error::{shorten, Location, MeshError};
+use crate::error::{shorten, Location, Error};
 
 /// Parses a finite-or-not `f64` token (finiteness is checked by the caller, which knows the
 /// vertex index).
-pub(crate) fn parse_f64(token: &str, file: &str, line: usize) -> Result<f64, MeshError> {
-    token.parse::<f64>().map_err(|_| MeshError::BadNumber {
+pub(crate) fn parse_f64(token: &str, file: &str, line: usize) -> Result<f64, Error> {
+    token.parse::<f64>().map_err(|_| Error::BadNumber {
         at: Location::line(file, line),
         token: shorten(token),
         expected: "a decimal floating-point number",
@@ -13,8 +13,8 @@ pub(crate) fn parse_f64(token: &str, file: &str, line: usize) -> Result<f64, Mes
 }
 
 /// Parses a non-negative integer token (count or index).
-pub(crate) fn parse_u64(token: &str, file: &str, line: usize) -> Result<u64, MeshError> {
-    token.parse::<u64>().map_err(|_| MeshError::BadNumber {
+pub(crate) fn parse_u64(token: &str, file: &str, line: usize) -> Result<u64, Error> {
+    token.parse::<u64>().map_err(|_| Error::BadNumber {
         at: Location::line(file, line),
         token: shorten(token),
         expected: "a non-negative integer",
@@ -22,9 +22,9 @@ pub(crate) fn parse_u64(token: &str, file: &str, line: usize) -> Result<u64, Mes
 }
 
 /// Checks that the three coordinates of vertex `vertex` are finite.
-pub(crate) fn check_finite(xyz: [f64; 3], vertex: usize, at: Location) -> Result<(), MeshError> {
+pub(crate) fn check_finite(xyz: [f64; 3], vertex: usize, at: Location) -> Result<(), Error> {
     match xyz.iter().find(|c| !c.is_finite()) {
-        Some(&value) => Err(MeshError::NonFinite { at, vertex, value }),
+        Some(&value) => Err(Error::NonFinite { at, vertex, value }),
         None => Ok(()),
     }
 }

@@ -25,8 +25,8 @@ use std::sync::OnceLock;
 
 use nalgebra::Point3;
 
-use crate::bvh::{Aabb, Bvh};
-use crate::query::oriented_boxes::{centre_half, fit, OrientedBoxes};
+use crate::bounding::{Aabb, Bvh};
+use crate::bounding::oriented_boxes::{centre_half, fit, OrientedBoxes};
 
 /// A node of the hierarchy for queries under poses.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -49,16 +49,18 @@
 //! );
 //! assert!(convex_solids_intersect(&a, &b).intersect);
 //! assert!(!convex_solids_intersect(&a, &c).intersect);
-//! # Ok::<(), cga_collide::shape::mesh::MeshError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
+use crate::exact::vector::{cross, dot, neg, sub};
 use std::cmp::Ordering;
 
 use nalgebra::Point3;
 
 use crate::exact::ExactPlane;
-use crate::query::{Collider, Mode};
-use crate::shape::mesh::{MeshError, TriMesh};
+use crate::collider::Collider;
+use crate::error::Error;
+use crate::shape::mesh::TriMesh;
 use crate::{Intersects, Triangle};
 
 /// A borrowed closed triangle mesh bounding a convex solid, triangles counter-clockwise seen
@@ -75,7 +77,7 @@ pub struct ConvexMeshRef<'a> {
 impl<'a> ConvexMeshRef<'a> {
     /// Borrows a mesh, checking that it has triangles, that its coordinates are finite and
     /// that its indices are in range.
-    pub fn new(vertices: &'a [Point3<f64>], triangles: &'a [[u32; 3]]) -> Result<Self, MeshError> {
+    pub fn new(vertices: &'a [Point3<f64>], triangles: &'a [[u32; 3]]) -> Result<Self, Error> {
         // TriMesh's checks, without copying: build a tiny mesh only when something is wrong.
         let bad_vertex = vertices
             .iter()
@@ -97,7 +99,7 @@ impl<'a> ConvexMeshRef<'a> {
     pub fn with_vertices<'b>(
         &self,
         vertices: &'b [Point3<f64>],
-    ) -> Result<ConvexMeshRef<'b>, MeshError>
+    ) -> Result<ConvexMeshRef<'b>, Error>
     where
         'a: 'b,
     {
@@ -110,7 +112,7 @@ impl<'a> ConvexMeshRef<'a> {
                 if vertices.len() == self.vertices.len() {
                     Ok(m)
                 } else {
-                    Err(MeshError::Empty {
+                    Err(Error::Empty {
                         file: format!(
                             "<memory: {} vertices given for a mesh of {}>",
                             vertices.len(),
@@ -199,7 +201,7 @@ fn exhaustive(a: &ConvexMeshRef<'_>, b: &ConvexMeshRef<'_>) -> Verdict {
             .expect("ConvexMeshRef invariants are TriMesh's")
     };
     Verdict {
-        intersect: collider(a).collides_solid(&collider(b), Mode::Bvh),
+        intersect: collider(a).collides_solid(&collider(b)),
         certificate: Certificate::Exhaustive,
     }
 }
@@ -375,25 +377,9 @@ const MAX_ITERATIONS: usize = 64;
 /// Unit roundoff of `f64`.
 const U: f64 = f64::EPSILON / 2.0;
 
-fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
 
-fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
 
-fn neg(a: &[f64; 3]) -> [f64; 3] {
-    [-a[0], -a[1], -a[2]]
-}
 
-fn cross(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {
-    [
-        u[1] * v[2] - u[2] * v[1],
-        u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0],
-    ]
-}
 
 /// `(u × v) × u`: the component of `v` orthogonal to `u`, scaled.
 fn triple(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {

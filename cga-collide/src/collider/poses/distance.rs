@@ -7,16 +7,18 @@ use std::ops::ControlFlow;
 
 use nalgebra::Isometry3;
 
-use super::{PoseError, PosedPair};
-use crate::query::clearance::{triangles_within, trivial};
-use crate::query::distance::{certified_mesh_distance, examine_pair, Distance, Open};
-use crate::query::oriented_boxes::OrientedGaps;
-use crate::query::placed_leaves::{with_scratch, Placed, Scratch};
-use crate::query::pose_tree::PoseNode;
-use crate::query::proximity::{
-    beyond, box_distance2, boxes_within, child_pairs, enqueue, improves, queued, unqueued,
-};
-use crate::query::Collider;
+use super::PosedPair;
+use crate::bounding::oriented_boxes::OrientedGaps;
+use crate::bounding::placed_leaves::{with_scratch, Placed, Scratch};
+use crate::bounding::pose_tree::PoseNode;
+use crate::bounding::{box_distance2, boxes_within};
+use crate::collider::nearest::{beyond, child_pairs, enqueue, improves, queued, unqueued};
+use crate::collider::distance::{check_distance_range, finite};
+use crate::collider::Collider;
+use crate::error::Error;
+use crate::query::separation::{certified_mesh_distance, examine_pair, Open};
+use crate::query::within_distance::{triangles_within, trivial};
+use crate::query::CertifiedDistance;
 
 type P3 = [f64; 3];
 
@@ -30,14 +32,16 @@ fn corners(p: &Placed) -> [P3; 3] {
 /// Triangle `i` of `c` placed at `pose` by the expression of
 /// [`TriMesh::transformed`](crate::TriMesh::transformed) (bit-identical to the placed mesh's).
 fn placed_corners(c: &Collider, pose: &Isometry3<f64>, i: u32) -> [P3; 3] {
-    c.mesh().triangle(i as usize).map(|v| {
+    c.mesh().corners(i).map(|v| {
         let w = pose * v;
         [w.x, w.y, w.z]
     })
 }
 
-fn is_empty(c: &Collider) -> bool {
-    c.mesh().num_triangles() == 0
+/// A bound on the magnitude of the placed coordinates: a rotation keeps the extent's
+/// Euclidean size (at most `√3` times the largest coordinate), and the translation adds to it.
+fn pose_magnitude(c: &Collider, pose: &Isometry3<f64>) -> f64 {
+    2.0 * c.extent() + pose.translation.vector.amax()
 }
 
 impl PosedPair<'_> {
@@ -85,7 +89,7 @@ impl PosedPair<'_> {
         with_scratch(na.len(), nb.len(), |s| {
             let mut best = (f64::INFINITY, 0u32, 0u32);
             let mut next = Some(queued(bound(s, 0, 0, f64::INFINITY), 0, 0));
-            let mut leaf_b: Vec<(u32, [P3; 3], crate::bvh::Aabb)> = Vec::new();
+            let mut leaf_b: Vec<(u32, [P3; 3], crate::bounding::Aabb)> = Vec::new();
             while let Some((lower, i, j)) = next.take().map(unqueued) {
                 if beyond(lower, best.0) {
                     break; // everything left is farther
@@ -155,9 +159,9 @@ impl Collider {
         other: &Collider,
         pose_b: &Isometry3<f64>,
         c: f64,
-    ) -> Result<Vec<(u32, u32)>, PoseError> {
+    ) -> Result<Vec<(u32, u32)>, Error> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        if trivial(c) == Some(false) || is_empty(self) || is_empty(other) {
+        if trivial(c) == Some(false) {
             return Ok(Vec::new());
         }
         let w = pair.widened(c);
@@ -179,14 +183,10 @@ impl Collider {
         other: &Collider,
         pose_b: &Isometry3<f64>,
         c: f64,
-    ) -> Result<bool, PoseError> {
+    ) -> Result<bool, Error> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        let nonempty = !is_empty(self) && !is_empty(other);
         if let Some(answer) = trivial(c) {
-            return Ok(answer && nonempty);
-        }
-        if !nonempty {
-            return Ok(false);
+            return Ok(answer);
         }
         let w = pair.widened(c);
         Ok(pair
@@ -226,19 +226,19 @@ impl Collider {
         pose_a: &Isometry3<f64>,
         other: &Collider,
         pose_b: &Isometry3<f64>,
-    ) -> Result<Option<Distance>, PoseError> {
+    ) -> Result<CertifiedDistance, Error> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        if is_empty(self) || is_empty(other) {
-            return Ok(None);
-        }
+        let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
+        check_distance_range(magnitude)?;
         let mut open = Vec::new();
         let found = pair.nearest(&mut open);
-        Ok(Some(certified_mesh_distance(
+        let d = certified_mesh_distance(
             found,
             &open,
             |x| placed_corners(self, pose_a, x),
             |y| placed_corners(other, pose_b, y),
-        )))
+        );
+        finite(d, magnitude)
     }
 }
 

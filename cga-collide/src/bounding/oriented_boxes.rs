@@ -519,7 +519,7 @@ mod tests {
                 for (i, a) in b.axes.iter().enumerate() {
                     let (lo, hi) = (q(b.c[i]) - q(b.e[i]), q(b.c[i]) + q(b.e[i]));
                     for &t in &tris {
-                        for v in c.mesh().triangle(t as usize) {
+                        for v in c.mesh().corners(t) {
                             let p = q(a[0]) * q(v.x) + q(a[1]) * q(v.y) + q(a[2]) * q(v.z);
                             prop_assert!(lo <= p && p <= hi, "vertex outside the box");
                         }

@@ -1,45 +1,14 @@
-//! Descending two box hierarchies together by distance: the box bounds behind mesh clearance
-//! and the best-first search behind mesh distance. The pair enumerations themselves (within a
-//! distance, or one mesh against itself) are [`Bvh`](crate::bvh::Bvh)'s. The search reads the
+//! The best-first search behind mesh distance: two box hierarchies descended together, node pairs
+//! ordered by a proved lower bound on their distance. The pair enumerations (within a distance,
+//! or one mesh against itself) are [`Bvh`](crate::bounding::Bvh)'s. The search reads the
 //! colliders' pose layout (nodes, oriented boxes, vertices in leaf order).
 
 use std::collections::BinaryHeap;
 
-use crate::bvh::{Aabb, MAX_LEAF};
-use crate::query::oriented_boxes::OrientedGaps;
-use crate::query::pose_tree::{PoseNode, PoseTree};
-use crate::query::Collider;
-
-/// A lower bound on the squared distance between two boxes, in `f64`, never above the true
-/// value by more than a few ulps (only used to order and prune the distance search, whose
-/// result is certified separately).
-#[inline]
-pub(crate) fn box_distance2(a: &Aabb, b: &Aabb) -> f64 {
-    let mut s = 0.0;
-    for k in 0..3 {
-        let g = (b.min[k] - a.max[k]).max(a.min[k] - b.max[k]).max(0.0);
-        s += g * g;
-    }
-    s
-}
-
-/// Conservative: `false` only if the closed boxes are certainly farther apart than `c`
-/// (`c >= 0`). Per axis, a rounded gap above `c` proves a true gap above `c` (rounding is
-/// monotone and `c` is an `f64`); the Euclidean sum gets a relative margin far above its
-/// rounding error.
-#[inline]
-pub(crate) fn boxes_within(a: &Aabb, b: &Aabb, c: f64) -> bool {
-    let mut s = 0.0;
-    for k in 0..3 {
-        let g = (b.min[k] - a.max[k]).max(a.min[k] - b.max[k]).max(0.0);
-        if g > c {
-            return false;
-        }
-        s += g * g;
-    }
-    let c2 = c * c;
-    !c2.is_finite() || s * (1.0 - 1e-9) <= c2 * (1.0 + 1e-9) + 1e-300
-}
+use crate::bounding::oriented_boxes::OrientedGaps;
+use crate::bounding::pose_tree::{PoseNode, PoseTree};
+use crate::bounding::{box_distance2, Aabb, MAX_LEAF};
+use crate::collider::Collider;
 
 /// Whether a pair `(i, j)` at `f64` squared distance `d2` replaces `best` in the nearest-pair
 /// search: nearer, or as near with a smaller `(i, j)`. The winner among equal distances then
@@ -121,7 +90,7 @@ fn corners_box(t: &Corners) -> Aabb {
 }
 
 /// Branch and bound: visits node pairs nearest first (best first) by the lower bound of their
-/// [oriented boxes](crate::query::oriented_boxes); `pair(i, p, j, q, best)` gets triangles
+/// [oriented boxes](crate::bounding::oriented_boxes); `pair(i, p, j, q, best)` gets triangles
 /// `i` of `a` and `j` of `b` with their corners and returns their squared distance (or `+∞`
 /// when it can tell the pair is no better; ties are broken by [`improves`]). Node pairs whose
 /// bound, and triangle pairs whose box distance, exceeds the best found so far (times

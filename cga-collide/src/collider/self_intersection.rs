@@ -16,19 +16,6 @@
 //!   non-degenerate one meets it only in `[u, v]`; two degenerate ones overlap beyond `u` or
 //!   `v` when both extend past the same end;
 //! * all three positions shared (a duplicated triangle): reported unless degenerate.
-//!
-//! ```
-//! use cga_collide::{nalgebra::Point3, query::{self, Collider}, TriMesh};
-//! // A closed cube has no self-intersection...
-//! let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?;
-//! assert!(query::self_intersections(&Collider::new(cube)).is_empty());
-//! // ...a fold does: two triangles on the edge 0-1, the second folded onto the first.
-//! let p = |x, y| Point3::new(x, y, 0.0);
-//! let fold = TriMesh::new(vec![p(0., 0.), p(2., 0.), p(1., 1.), p(1., 2.)],
-//!                         vec![[0, 1, 2], [1, 0, 3]])?;
-//! assert_eq!(query::self_intersections(&Collider::new(fold)), vec![(0, 1)]);
-//! # Ok::<(), cga_collide::mesh::MeshError>(())
-//! ```
 
 use core::cmp::Ordering::{Equal, Greater};
 use std::ops::ControlFlow;
@@ -37,7 +24,8 @@ use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::parallel::*;
 use crate::query::intersects::extremes;
-use crate::query::{Collider, Intersects};
+use crate::collider::{Collider, Mode};
+use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
 type P3 = [f64; 3];
@@ -160,61 +148,74 @@ pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
     }
 }
 
-/// Every pair `(i, j)`, `i < j`, of triangles of the mesh that meet anywhere other than in the
-/// vertices or the edge they share (see the [module docs](self)), sorted. The hierarchy
-/// enumerates the pairs whose boxes overlap; they are decided in parallel.
-pub fn self_intersections(mesh: &Collider) -> Vec<(u32, u32)> {
-    let mut candidates = Vec::new();
-    let _ = mesh.bvh().for_each_self_pair::<()>(|i, j| {
-        candidates.push((i.min(j), i.max(j)));
-        ControlFlow::Continue(())
-    });
-    let tri = |i: u32| {
-        let [a, b, c] = mesh.mesh().triangle(i as usize);
-        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
-    };
-    let mut out: Vec<(u32, u32)> = candidates
-        .par_iter()
-        .copied()
-        .filter(|&(i, j)| meet_elsewhere(&tri(i), &tri(j)))
-        .collect();
-    out.sort_unstable();
-    out
-}
+impl Collider {
+    /// Every pair `(i, j)`, `i < j`, of triangles of the mesh that meet anywhere other than in
+    /// the vertices or the edge they share (see the module docs), sorted. With [`Mode::Bvh`]
+    /// the tree enumerates the pairs whose boxes overlap; with [`Mode::Brute`] every pair is
+    /// tested; either way they are decided in parallel, and the answers are identical.
+    /// A rigid pose does not change the answer, so there is no `_at` twin.
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::Point3, Collider, TriMesh};
+    /// // A closed cube has no self-intersection...
+    /// let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?;
+    /// assert!(Collider::new(cube).self_intersections().is_empty());
+    /// // ...a fold does: two triangles on the edge 0-1, the second folded onto the first.
+    /// let p = |x, y| Point3::new(x, y, 0.0);
+    /// let fold = TriMesh::new(vec![p(0., 0.), p(2., 0.), p(1., 1.), p(1., 2.)],
+    ///                         vec![[0, 1, 2], [1, 0, 3]])?;
+    /// let fold = Collider::new(fold);
+    /// assert_eq!(fold.self_intersections(), vec![(0, 1)]);
+    /// assert!(fold.self_intersects());
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    pub fn self_intersections(&self) -> Vec<(u32, u32)> {
+        if self.mode() == Mode::Brute {
+            return self.self_intersections_brute();
+        }
+        let mut candidates = Vec::new();
+        let _ = self.bvh().for_each_self_pair::<()>(|i, j| {
+            candidates.push((i.min(j), i.max(j)));
+            ControlFlow::Continue(())
+        });
+        let mut out: Vec<(u32, u32)> = candidates
+            .par_iter()
+            .copied()
+            .filter(|&(i, j)| meet_elsewhere(&self.corners(i), &self.corners(j)))
+            .collect();
+        out.sort_unstable();
+        out
+    }
 
-/// Whether any two triangles of the mesh meet anywhere other than in what they share (stops
-/// at the first such pair). See [`self_intersections`].
-pub fn self_intersects(mesh: &Collider) -> bool {
-    let tri = |i: u32| {
-        let [a, b, c] = mesh.mesh().triangle(i as usize);
-        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
-    };
-    mesh.bvh()
-        .for_each_self_pair(|i, j| {
-            if meet_elsewhere(&tri(i), &tri(j)) {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        })
-        .is_break()
-}
+    /// Whether any two triangles of the mesh meet anywhere other than in what they share (stops
+    /// at the first such pair). See [`self_intersections`](Self::self_intersections).
+    pub fn self_intersects(&self) -> bool {
+        if self.mode() == Mode::Brute {
+            return !self.self_intersections_brute().is_empty();
+        }
+        self.bvh()
+            .for_each_self_pair(|i, j| {
+                if meet_elsewhere(&self.corners(i), &self.corners(j)) {
+                    ControlFlow::Break(())
+                } else {
+                    ControlFlow::Continue(())
+                }
+            })
+            .is_break()
+    }
 
-/// [`self_intersections`] by brute force over every pair (in parallel, no hierarchy, no box
-/// filter): the baseline of the benchmarks and tests.
-pub fn self_intersections_brute(mesh: &Collider) -> Vec<(u32, u32)> {
-    let n = mesh.mesh().num_triangles() as u32;
-    let tri = |i: u32| {
-        let [a, b, c] = mesh.mesh().triangle(i as usize);
-        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
-    };
-    let mut out: Vec<(u32, u32)> = (0..n)
-        .into_par_iter()
-        .flat_map_iter(|i| {
-            let ti = tri(i);
-            (i + 1..n).filter_map(move |j| meet_elsewhere(&ti, &tri(j)).then_some((i, j)))
-        })
-        .collect();
-    out.sort_unstable();
-    out
+    /// Every pair tested, in parallel, with no tree and no box filter.
+    fn self_intersections_brute(&self) -> Vec<(u32, u32)> {
+        let n = self.mesh().num_triangles() as u32;
+        let mut out: Vec<(u32, u32)> = (0..n)
+            .into_par_iter()
+            .flat_map_iter(|i| {
+                let ti = self.corners(i);
+                (i + 1..n)
+                    .filter_map(move |j| meet_elsewhere(&ti, &self.corners(j)).then_some((i, j)))
+            })
+            .collect();
+        out.sort_unstable();
+        out
+    }
 }

@@ -13,9 +13,9 @@ use std::ops::Range;
 
 use nalgebra::Isometry3;
 
-use crate::bvh::Aabb;
-use crate::query::oriented_boxes::{Carried, OrientedBox, OrientedGaps};
-use crate::query::pose_tree::{PoseNode, PoseTree};
+use crate::bounding::Aabb;
+use crate::bounding::oriented_boxes::{Carried, OrientedBox, OrientedGaps};
+use crate::bounding::pose_tree::{PoseNode, PoseTree};
 use crate::Triangle;
 
 /// A triangle placed exactly as [`Collider::placed`](crate::query::Collider::placed) places

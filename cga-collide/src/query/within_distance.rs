@@ -35,7 +35,7 @@
 //! let s = Segment::new(p(0.25, 0.25, 0.5), p(3., 3., 0.5))?; // 0.5 above the face
 //! assert!(query::within_distance_segment_triangle(&s, &t, 0.5)); // exactly 0.5 counts
 //! assert!(!query::within_distance_segment_triangle(&s, &t, 0.4999999999999999));
-//! # Ok::<(), cga_collide::GeometryError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use core::cmp::Ordering::{Equal, Greater, Less};
@@ -47,12 +47,8 @@ use crate::exact::predicates::{
     LineReach, PlaneReach, ReachSign, SegmentDot,
 };
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
-use std::ops::ControlFlow;
-
-use crate::parallel::*;
 use crate::query::intersects::extremes;
-use crate::query::proximity::boxes_within;
-use crate::query::{Collider, Intersects};
+use crate::query::Intersects;
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 type P3 = [f64; 3];
@@ -374,75 +370,4 @@ named_tests! {
     within_distance_ball_ball(Ball, Ball);
     /// Exact: are the solid ball and the spherical surface within distance `c`?
     within_distance_ball_sphere(Ball, Sphere);
-}
-
-// ---------------------------------------------------------------- meshes
-
-/// The three corners of triangle `i` of the collider's mesh as raw coordinates.
-#[inline]
-pub(crate) fn mesh_tri(c: &Collider, i: u32) -> [P3; 3] {
-    let [a, b, d] = c.mesh().triangle(i as usize);
-    [pt(&a), pt(&b), pt(&d)]
-}
-
-/// Every pair `(i, j)` of a triangle `i` of `a` and `j` of `b` within distance `c` of each
-/// other, exactly (closed: distance exactly `c` counts; intersecting pairs are at distance 0),
-/// sorted. The hierarchies enumerate the node pairs whose boxes come within `c`
-/// (conservatively), and the candidate pairs are decided in parallel by the exact
-/// triangle–triangle clearance test. `c` outside `[0, ∞)`: see the [module docs](self) (for
-/// `c = ∞` every pair is returned).
-///
-/// Both colliders must be in the same frame ([`Collider::placed`]).
-///
-/// ```
-/// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
-/// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
-/// let moved = cube.placed(&Isometry3::translation(1.5, 0.0, 0.0))?; // a gap of exactly 0.5
-/// assert!(query::mesh_pairs_within_distance(&cube, &moved, 0.4).is_empty());
-/// assert!(!query::mesh_pairs_within_distance(&cube, &moved, 0.5).is_empty());
-/// assert!(query::meshes_within_distance(&cube, &moved, 0.5));
-/// # Ok::<(), cga_collide::mesh::MeshError>(())
-/// ```
-pub fn mesh_pairs_within_distance(a: &Collider, b: &Collider, c: f64) -> Vec<(u32, u32)> {
-    if trivial(c) == Some(false) {
-        return Vec::new();
-    }
-    let mut candidates = Vec::new();
-    let _ = a.bvh().for_each_pair_where::<()>(
-        b.bvh(),
-        |x, y| boxes_within(x, y, c),
-        |i, j| {
-            candidates.push((i, j));
-            ControlFlow::Continue(())
-        },
-    );
-    let mut out: Vec<(u32, u32)> = candidates
-        .par_iter()
-        .copied()
-        .filter(|&(i, j)| triangles_within(&mesh_tri(a, i), &mesh_tri(b, j), c))
-        .collect();
-    out.sort_unstable();
-    out
-}
-
-/// Whether some triangle of `a` is within distance `c` of some triangle of `b`, exactly
-/// (the surfaces' clearance; stops at the first pair found). See
-/// [`mesh_pairs_within_distance`].
-pub fn meshes_within_distance(a: &Collider, b: &Collider, c: f64) -> bool {
-    if let Some(answer) = trivial(c) {
-        return answer && a.mesh().num_triangles() > 0 && b.mesh().num_triangles() > 0;
-    }
-    a.bvh()
-        .for_each_pair_where(
-            b.bvh(),
-            |x, y| boxes_within(x, y, c),
-            |i, j| {
-                if triangles_within(&mesh_tri(a, i), &mesh_tri(b, j), c) {
-                    ControlFlow::Break(())
-                } else {
-                    ControlFlow::Continue(())
-                }
-            },
-        )
-        .is_break()
 }

@@ -1,0 +1,22 @@
+//! How candidates are found: box trees over a mesh's triangles and what the queries under poses
+//! read from them.
+//!
+//! | item | what it is |
+//! |---|---|
+//! | [`Bvh`], [`Aabb`], [`BuildStrategy`] | the box tree over a mesh's triangles (binned SAH or median split), exact `f64` boxes |
+//! | `pose_tree` | the same tree laid out for queries under poses (centre and half-extents per node, vertices in leaf order) |
+//! | `oriented_boxes` | boxes fitted to each node's geometry, with a proved lower bound on the distance of two of them under a relative pose |
+//! | `pose_bounds` | a rigid pose analysed once: its rounded matrix and the proved bounds on the rounding of `pose * v` |
+//! | `placed_leaves` | per-thread scratch memory holding the leaves placed by a pose during one traversal |
+//!
+//! Every test here is conservative: it may let through a candidate that does not meet, never
+//! reject one that does. The exact decision is always made afterwards, on the triangles.
+
+mod bvh;
+pub(crate) mod oriented_boxes;
+pub(crate) mod placed_leaves;
+pub(crate) mod pose_bounds;
+pub(crate) mod pose_tree;
+
+pub use bvh::{triangle_box, Aabb, BuildStrategy, Bvh, BvhNode, MAX_LEAF};
+pub(crate) use bvh::{box_distance2, boxes_within};
