@@ -5,8 +5,8 @@
 
 use std::hint::black_box;
 
-use cga_collide::bvh::{BuildStrategy, Bvh};
-use cga_collide::query::{Collider, Mode};
+use cga_collide::bounding::{BuildStrategy, Bvh};
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Segment, Sphere};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -57,7 +57,7 @@ fn mesh_mesh(c: &mut Criterion) {
     let median_b = Collider::with_strategy(b.mesh().clone(), BuildStrategy::Median);
     eprintln!(
         "bunny00 x armadillo: {} intersecting pairs, {} box-overlap candidates",
-        a.intersecting_pairs(&b, Mode::Bvh).len(),
+        a.intersecting_pairs(&b).len(),
         a.box_pairs_bvh(&b).len()
     );
     // parry3d (latest release) the way its users call it: both meshes in their own frame,
@@ -77,15 +77,13 @@ fn mesh_mesh(c: &mut Criterion) {
     });
     g.sample_size(10);
     g.bench_function("all_pairs_bvh_sah", |bch| {
-        bch.iter(|| a.intersecting_pairs(&b, Mode::Bvh))
+        bch.iter(|| a.intersecting_pairs(&b))
     });
     g.bench_function("all_pairs_bvh_median", |bch| {
-        bch.iter(|| median_a.intersecting_pairs(&median_b, Mode::Bvh))
+        bch.iter(|| median_a.intersecting_pairs(&median_b))
     });
     g.bench_function("box_pairs_only_sah", |bch| bch.iter(|| a.box_pairs_bvh(&b)));
-    g.bench_function("first_hit_bvh", |bch| {
-        bch.iter(|| a.collides(&b, Mode::Bvh))
-    });
+    g.bench_function("first_hit_bvh", |bch| bch.iter(|| a.collides(&b)));
     g.bench_function("place_and_refit", |bch| {
         bch.iter(|| a.placed(black_box(&Isometry3::translation(0.3, 0.05, 0.0))))
     });
@@ -111,16 +109,14 @@ fn primitives(c: &mut Criterion) {
     let mut g = c.benchmark_group("bunny_3.76M");
     g.sample_size(10);
     g.bench_function("segment_brute", |bch| {
-        bch.iter(|| big.segment_hits(&seg, Mode::Brute))
+        bch.iter(|| big.clone().with_mode(Mode::Brute).segment_hits(&seg))
     });
-    g.bench_function("segment_bvh", |bch| {
-        bch.iter(|| big.segment_hits(&seg, Mode::Bvh))
-    });
+    g.bench_function("segment_bvh", |bch| bch.iter(|| big.segment_hits(&seg)));
     g.bench_function("16_spheres_brute", |bch| {
-        bch.iter(|| big.spheres_hits(&spheres, Mode::Brute))
+        bch.iter(|| big.clone().with_mode(Mode::Brute).spheres_hits(&spheres))
     });
     g.bench_function("16_spheres_bvh", |bch| {
-        bch.iter(|| big.spheres_hits(&spheres, Mode::Bvh))
+        bch.iter(|| big.spheres_hits(&spheres))
     });
     g.finish();
 }

@@ -11,7 +11,7 @@
 
 use std::hint::black_box;
 
-use cga_collide::query::{self, Collider};
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use nalgebra::{Isometry3, Vector3};
@@ -51,7 +51,7 @@ fn distance(c: &mut Criterion) {
         let b = Collider::new(arm.transformed(&iso).unwrap());
         let pb =
             ParryMesh::new(b.mesh().vertices().to_vec(), b.mesh().triangles().to_vec()).unwrap();
-        let ours = query::mesh_distance(&a, &b).unwrap();
+        let ours = a.distance(&b).unwrap();
         let lb = latest_mesh(b.mesh());
         let parry = parry3d_f64::query::distance(&id, &pa, &id, &pb);
         let latest = parry3d_latest::query::distance(&lid, &la, &lid, &lb);
@@ -60,7 +60,7 @@ fn distance(c: &mut Criterion) {
             ours.distance, ours.error_bound, ours.triangles, parry, latest
         );
         g.bench_with_input(BenchmarkId::new("cga_certified", k), &(), |bch, _| {
-            bch.iter(|| query::mesh_distance(black_box(&a), black_box(&b)))
+            bch.iter(|| black_box(&a).distance(black_box(&b)))
         });
         if parry.is_ok() {
             g.bench_with_input(BenchmarkId::new("parry3d", k), &(), |bch, _| {
@@ -89,10 +89,14 @@ fn distance_at_poses(c: &mut Criterion) {
     for (k, (t, r)) in PLACEMENTS.iter().enumerate() {
         let pb = pa * Isometry3::new(Vector3::from(*t), Vector3::from(*r));
         let at = a.distance_at(&pa, &b, &pb).unwrap();
-        let placed = query::mesh_distance(&a.placed(&pa).unwrap(), &b.placed(&pb).unwrap());
+        let placed = a
+            .placed(&pa)
+            .unwrap()
+            .distance(&b.placed(&pb).unwrap())
+            .unwrap();
         eprintln!(
             "pose {k}: distance_at {:?}; identical to placing first: {}",
-            at.map(|d| (d.distance, d.error_bound, d.triangles)),
+            (at.distance, at.error_bound, at.triangles),
             at == placed
         );
         g.bench_with_input(BenchmarkId::new("distance_at", k), &(), |bch, _| {
@@ -104,7 +108,7 @@ fn distance_at_poses(c: &mut Criterion) {
             |bch, _| {
                 bch.iter(|| {
                     let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
-                    query::mesh_distance(black_box(&wa), black_box(&wb))
+                    black_box(&wa).distance(black_box(&wb))
                 })
             },
         );
@@ -113,7 +117,7 @@ fn distance_at_poses(c: &mut Criterion) {
         g.bench_with_input(
             BenchmarkId::new("mesh_distance_placed_once", k),
             &(),
-            |bch, _| bch.iter(|| query::mesh_distance(black_box(&wa), black_box(&wb))),
+            |bch, _| bch.iter(|| black_box(&wa).distance(black_box(&wb))),
         );
     }
     g.finish();
@@ -132,7 +136,7 @@ fn clearance_at_poses(c: &mut Criterion) {
         let pb = pa * Isometry3::new(Vector3::from(*t), Vector3::from(*r));
         let at = a.pairs_within_distance_at(&pa, &b, &pb, CLEARANCE).unwrap();
         let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
-        let placed = query::mesh_pairs_within_distance(&wa, &wb, CLEARANCE);
+        let placed = wa.pairs_within_distance(&wb, CLEARANCE);
         eprintln!(
             "pose {k}: {} pairs within {CLEARANCE}; identical to placing first: {}",
             at.len(),
@@ -153,18 +157,14 @@ fn clearance_at_poses(c: &mut Criterion) {
             |bch, _| {
                 bch.iter(|| {
                     let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
-                    query::mesh_pairs_within_distance(black_box(&wa), black_box(&wb), CLEARANCE)
+                    black_box(&wa).pairs_within_distance(black_box(&wb), CLEARANCE)
                 })
             },
         );
         g.bench_with_input(
             BenchmarkId::new("mesh_pairs_within_distance_placed_once", k),
             &(),
-            |bch, _| {
-                bch.iter(|| {
-                    query::mesh_pairs_within_distance(black_box(&wa), black_box(&wb), CLEARANCE)
-                })
-            },
+            |bch, _| bch.iter(|| black_box(&wa).pairs_within_distance(black_box(&wb), CLEARANCE)),
         );
     }
     g.finish();
@@ -177,12 +177,13 @@ fn self_intersection(c: &mut Criterion) {
         let col = Collider::new(mesh);
         let n = col.mesh().num_triangles() as u32;
         g.bench_with_input(BenchmarkId::new("bvh_parallel", name), &(), |bch, _| {
-            bch.iter(|| query::self_intersections(black_box(&col)))
+            bch.iter(|| black_box(&col).self_intersections())
         });
         if n <= 6000 {
             // Baseline: every pair, the same exact decision (what the tree must agree with).
+            let brute = col.clone().with_mode(Mode::Brute);
             g.bench_with_input(BenchmarkId::new("brute_all_pairs", name), &(), |bch, _| {
-                bch.iter(|| query::self_intersections_brute(black_box(&col)))
+                bch.iter(|| black_box(&brute).self_intersections())
             });
         }
     }

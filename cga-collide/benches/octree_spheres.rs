@@ -8,10 +8,10 @@
 
 use std::hint::black_box;
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::collide;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::nalgebra::{Isometry3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 
@@ -48,12 +48,12 @@ fn queries(c: &mut Criterion) {
         let mb = tb.transformed(&iso);
         eprintln!(
             "{name}: exact {}, paper {}, simultaneous {}",
-            a.collides_solid(&pb, Mode::Bvh),
+            a.collides_solid(&pb),
             collide::paper_method(&ta, &mb).collides,
             collide::simultaneous(&ta, &mb).collides
         );
         g.bench_function(format!("{name}/exact_bvh_baseline"), |bch| {
-            bch.iter(|| black_box(a.collides_solid(&pb, Mode::Bvh)))
+            bch.iter(|| black_box(a.collides_solid(&pb)))
         });
         g.bench_function(format!("{name}/paper"), |bch| {
             bch.iter(|| black_box(collide::paper_method(&ta, &mb).collides))

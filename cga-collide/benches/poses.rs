@@ -23,7 +23,7 @@
 
 use std::hint::black_box;
 
-use cga_collide::query::{Collider, PosePair};
+use cga_collide::collider::{Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
@@ -100,16 +100,19 @@ fn per_pose(c: &mut Criterion) {
         })
     });
     g.sample_size(10);
+    let one = pool(1);
     g.bench_function("ours_all_pairs_1_thread", |bch| {
         bch.iter(|| {
-            poses
-                .iter()
-                .map(|p| {
-                    a.intersecting_pairs_at_sequential(&id, &b, black_box(p))
-                        .unwrap()
-                        .len()
-                })
-                .sum::<usize>()
+            one.install(|| {
+                poses
+                    .iter()
+                    .map(|p| {
+                        a.intersecting_pairs_at(&id, &b, black_box(p))
+                            .unwrap()
+                            .len()
+                    })
+                    .sum::<usize>()
+            })
         })
     });
     let two = pool(2);
@@ -142,7 +145,7 @@ fn per_pose(c: &mut Criterion) {
             few.iter()
                 .filter(|p| {
                     let placed = b.placed(black_box(p)).unwrap();
-                    a.collides(&placed, cga_collide::query::Mode::Bvh)
+                    a.collides(&placed)
                 })
                 .count()
         })
@@ -152,22 +155,21 @@ fn per_pose(c: &mut Criterion) {
         bch.iter(|| {
             placed
                 .iter()
-                .map(|pb| {
-                    a.intersecting_pairs(black_box(pb), cga_collide::query::Mode::Bvh)
-                        .len()
-                })
+                .map(|pb| a.intersecting_pairs(black_box(pb)).len())
                 .sum::<usize>()
         })
     });
     g.bench_function("ours_all_pairs_1_thread_first_10", |bch| {
         bch.iter(|| {
-            few.iter()
-                .map(|p| {
-                    a.intersecting_pairs_at_sequential(&id, &b, black_box(p))
-                        .unwrap()
-                        .len()
-                })
-                .sum::<usize>()
+            one.install(|| {
+                few.iter()
+                    .map(|p| {
+                        a.intersecting_pairs_at(&id, &b, black_box(p))
+                            .unwrap()
+                            .len()
+                    })
+                    .sum::<usize>()
+            })
         })
     });
     g.finish();

@@ -6,9 +6,9 @@
 use cga_collide::conformal::meet::{LinePlane, LineSphere, Meet, SphereSphere};
 use cga_collide::conformal::{Line, Plane, Sphere, Transform, Versor};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
-use cga_collide::GeometryError;
+use cga_collide::Error;
 
-pub fn main() -> Result<(), GeometryError> {
+pub fn main() -> Result<(), Error> {
     // A line through two points (outer form P1 ∧ P2 ∧ n_inf) and a unit sphere (inner form).
     let line = Line::from_points(Point3::new(-2.0, 0.0, 1.0), Point3::new(2.0, 0.0, 1.0))?;
     let sphere = Sphere::from_centre_radius(Point3::origin(), 1.0)?;

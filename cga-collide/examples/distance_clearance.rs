@@ -4,7 +4,8 @@
 //! Run: `cargo run --release -p cga-collide --example distance_clearance`.
 
 use cga_collide::nalgebra::{Isometry3, Point3};
-use cga_collide::query::{self, Collider};
+
+use cga_collide::collider::Collider;
 use cga_collide::TriMesh;
 
 pub fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -15,10 +16,10 @@ pub fn main() -> Result<(), Box<dyn std::error::Error>> {
     let b = Collider::new(unit(0.0)?).placed(&Isometry3::translation(1.25, 0.0, 0.0))?;
 
     // Clearance is closed: a distance of exactly c counts.
-    assert!(query::meshes_within_distance(&a, &b, 0.25));
-    assert!(!query::meshes_within_distance(&a, &b, 0.2499999999999999));
+    assert!(a.within_distance(&b, 0.25));
+    assert!(!a.within_distance(&b, 0.2499999999999999));
 
-    let d = query::mesh_distance(&a, &b).expect("both meshes have triangles");
+    let d = a.distance(&b).expect("both meshes have triangles");
     println!(
         "distance {} (± {:e}) between {} and {}, triangles {:?}",
         d.distance, d.error_bound, d.witness_a, d.witness_b, d.triangles

@@ -13,10 +13,10 @@
 
 use std::time::Instant;
 
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::gpu::Device;
 use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::Segment;
 
 fn seconds(t: Instant) -> f64 {
@@ -71,7 +71,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("| test | pairs | CPU brute force (s) | GPU (s) | hits | flagged | same answers |");
     println!("|---|---:|---:|---:|---:|---:|---|");
     let t = Instant::now();
-    let cpu = collider.segment_hits(&segment, Mode::Brute);
+    let cpu = collider
+        .clone()
+        .with_mode(Mode::Brute)
+        .segment_hits(&segment);
     let cpu_s = seconds(t);
     let t = Instant::now();
     let gpu = device.hits(&segment.into(), &big)?;
@@ -86,7 +89,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
 
     let t = Instant::now();
-    let cpu = small_collider.intersecting_pairs(&collider, Mode::Brute);
+    let cpu = small_collider
+        .clone()
+        .with_mode(Mode::Brute)
+        .intersecting_pairs(&collider);
     let cpu_s = seconds(t);
     let t = Instant::now();
     let gpu = device.intersecting_pairs(&small, &big)?;

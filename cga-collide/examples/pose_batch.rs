@@ -2,8 +2,8 @@
 //!
 //! Run: `cargo run --release -p cga-collide --example pose_batch`.
 
+use cga_collide::collider::{Collider, PosePair};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
-use cga_collide::query::{Collider, PosePair};
 use cga_collide::TriMesh;
 
 pub fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -14,7 +14,6 @@ use thiserror::Error;
 #[non_exhaustive]
 pub enum Error {
     // ------------------------------------------------------------ shapes
-
     /// A coordinate of a point argument is NaN or infinite.
     #[error("{shape}::new: argument `{argument}` has a non-finite {axis} coordinate ({value}); coordinates must be finite numbers")]
     NonFiniteCoordinate {
@@ -66,7 +65,6 @@ pub enum Error {
     },
 
     // ------------------------------------------------------------ meshes and files
-
     /// [`TriMesh::cuboid`](super::TriMesh::cuboid) was given a corner that is not finite or
     /// lies beyond the other corner.
     #[error("TriMesh::cuboid: on axis {axis}, min {min} and max {max} do not make an interval (both must be finite, min <= max)")]

@@ -1,8 +1,8 @@
 //! The hierarchy never misses a candidate, and both query modes give identical exact answers,
 //! on random placements including touching and coplanar contacts.
 
-use cga_collide::bvh::BuildStrategy;
-use cga_collide::query::{Collider, Mode};
+use cga_collide::bounding::BuildStrategy;
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -31,11 +31,14 @@ fn check_pairs(a: &Collider, b: &Collider) -> Result<(), TestCaseError> {
         v.sort_unstable();
         v
     });
-    let brute = a.intersecting_pairs(b, Mode::Brute);
-    let bvh = a.intersecting_pairs(b, Mode::Bvh);
+    let brute = a.clone().with_mode(Mode::Brute).intersecting_pairs(b);
+    let bvh = a.intersecting_pairs(b);
     prop_assert_eq!(&brute, &bvh);
-    prop_assert_eq!(a.collides(b, Mode::Brute), !brute.is_empty());
-    prop_assert_eq!(a.collides(b, Mode::Bvh), !brute.is_empty());
+    prop_assert_eq!(
+        a.clone().with_mode(Mode::Brute).collides(b),
+        !brute.is_empty()
+    );
+    prop_assert_eq!(a.collides(b), !brute.is_empty());
     Ok(())
 }
 
@@ -44,18 +47,25 @@ fn self_contact_and_far_apart() {
     let solid = cube([0, 0, 0], [3, 2, 1]).subdivided().subdivided();
     let c = Collider::new(solid.clone());
     // A mesh against itself: every triangle meets itself (and its neighbours).
-    let pairs = c.intersecting_pairs(&c, Mode::Bvh);
+    let pairs = c.intersecting_pairs(&c);
     assert!(pairs.len() > c.mesh().num_triangles());
     assert!((0..c.mesh().num_triangles() as u32).all(|i| pairs.binary_search(&(i, i)).is_ok()));
-    assert_eq!(c.intersecting_pairs(&c, Mode::Brute), pairs);
+    assert_eq!(
+        c.clone().with_mode(Mode::Brute).intersecting_pairs(&c),
+        pairs
+    );
     let median = Collider::with_strategy(solid, BuildStrategy::Median);
-    assert_eq!(median.intersecting_pairs(&c, Mode::Bvh), pairs);
+    assert_eq!(median.intersecting_pairs(&c), pairs);
     let bunny = Collider::new(TriMesh::bunny());
     let far = bunny
         .placed(&Isometry3::translation(100.0, 0.0, 0.0))
         .unwrap();
-    assert!(!bunny.collides(&far, Mode::Bvh));
-    assert!(bunny.intersecting_pairs(&far, Mode::Brute).is_empty());
+    assert!(!bunny.collides(&far));
+    assert!(bunny
+        .clone()
+        .with_mode(Mode::Brute)
+        .intersecting_pairs(&far)
+        .is_empty());
 }
 
 #[test]
@@ -71,17 +81,17 @@ fn touching_and_coplanar_boxes() {
         ([0, 0, 2], [1, 1, 3], true),
     ] {
         let b = Collider::new(cube(lo, hi));
-        let pairs = a.intersecting_pairs(&b, Mode::Brute);
-        assert_eq!(pairs, a.intersecting_pairs(&b, Mode::Bvh));
+        let pairs = a.clone().with_mode(Mode::Brute).intersecting_pairs(&b);
+        assert_eq!(pairs, a.intersecting_pairs(&b));
         assert_eq!(!pairs.is_empty(), touching, "{lo:?} {hi:?}");
-        assert_eq!(a.collides(&b, Mode::Bvh), touching);
+        assert_eq!(a.collides(&b), touching);
     }
     // coplanar grids shifted by half a cell
     let g = Collider::new(grid(4, 0.0));
     let h = g.placed(&Isometry3::translation(0.5, 0.5, 0.0)).unwrap();
-    let pairs = g.intersecting_pairs(&h, Mode::Brute);
+    let pairs = g.clone().with_mode(Mode::Brute).intersecting_pairs(&h);
     assert!(!pairs.is_empty());
-    assert_eq!(pairs, g.intersecting_pairs(&h, Mode::Bvh));
+    assert_eq!(pairs, g.intersecting_pairs(&h));
 }
 
 proptest! {
@@ -140,13 +150,13 @@ proptest! {
             ];
             for s in &segments {
                 let exact = oracle(c, s);
-                prop_assert_eq!(&c.segment_hits(s, Mode::Brute), &exact);
-                prop_assert_eq!(&c.segment_hits(s, Mode::Bvh), &exact);
+                prop_assert_eq!(&c.clone().with_mode(Mode::Brute).segment_hits(s), &exact);
+                prop_assert_eq!(&c.segment_hits(s), &exact);
             }
             let t = Triangle::new(u, w, along).unwrap();
             let exact = oracle(c, &t);
-            prop_assert_eq!(&c.triangle_hits(&t, Mode::Brute), &exact);
-            prop_assert_eq!(&c.triangle_hits(&t, Mode::Bvh), &exact);
+            prop_assert_eq!(&c.clone().with_mode(Mode::Brute).triangle_hits(&t), &exact);
+            prop_assert_eq!(&c.triangle_hits(&t), &exact);
             // spheres through a vertex (centre at a vertex, radius an exact axis distance)
             let spheres = [
                 Sphere::new(u, r).unwrap(),
@@ -156,18 +166,18 @@ proptest! {
             ];
             for s in &spheres {
                 let exact = oracle(c, s);
-                prop_assert_eq!(&c.sphere_hits(s, Mode::Brute), &exact);
-                prop_assert_eq!(&c.sphere_hits(s, Mode::Bvh), &exact);
+                prop_assert_eq!(&c.clone().with_mode(Mode::Brute).sphere_hits(s), &exact);
+                prop_assert_eq!(&c.sphere_hits(s), &exact);
                 let b = Ball::from(*s);
                 let exact = oracle(c, &b);
-                prop_assert_eq!(&c.ball_hits(&b, Mode::Brute), &exact);
-                prop_assert_eq!(&c.ball_hits(&b, Mode::Bvh), &exact);
+                prop_assert_eq!(&c.clone().with_mode(Mode::Brute).ball_hits(&b), &exact);
+                prop_assert_eq!(&c.ball_hits(&b), &exact);
             }
             let mut union: Vec<u32> = spheres.iter().flat_map(|s| oracle(c, s)).collect();
             union.sort_unstable();
             union.dedup();
-            prop_assert_eq!(&c.spheres_hits(&spheres, Mode::Brute), &union);
-            prop_assert_eq!(&c.spheres_hits(&spheres, Mode::Bvh), &union);
+            prop_assert_eq!(&c.clone().with_mode(Mode::Brute).spheres_hits(&spheres), &union);
+            prop_assert_eq!(&c.spheres_hits(&spheres), &union);
         }
     }
 }

@@ -1,9 +1,10 @@
 //! Exact clearance (`dist(a, b) <= c`) against the exact rational brute-force oracle, including
 //! pairs at exactly distance `c` and the `f64` just below it.
 
+use cga_collide::collider::Collider;
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
-use cga_collide::query::{self, Collider, WithinDistance};
+use cga_collide::query::WithinDistance;
 use cga_collide::testing::oracle::{self, Shape};
 use cga_collide::{Ball, Segment, Sphere, TriMesh, Triangle};
 use proptest::prelude::*;
@@ -157,7 +158,7 @@ fn oracle_mesh_pairs(a: &Collider, b: &Collider, c: f64) -> Vec<(u32, u32)> {
     let mut out = Vec::new();
     for i in 0..a.mesh().num_triangles() {
         for j in 0..b.mesh().num_triangles() {
-            let (p, r) = (a.mesh().triangle(i), b.mesh().triangle(j));
+            let (p, r) = (a.mesh().corners(i as u32), b.mesh().corners(j as u32));
             if oracle::hulls_distance2(&p, &r) <= rational_from_f64(c).unwrap().pow(2) {
                 out.push((i as u32, j as u32));
             }
@@ -184,8 +185,8 @@ proptest! {
             Vector3::z() * angle,
         );
         let moved = cube.placed(&iso).unwrap();
-        let pairs = query::mesh_pairs_within_distance(&cube, &moved, c);
+        let pairs = cube.pairs_within_distance(&moved, c);
         prop_assert_eq!(&pairs, &oracle_mesh_pairs(&cube, &moved, c));
-        prop_assert_eq!(query::meshes_within_distance(&cube, &moved, c), !pairs.is_empty());
+        prop_assert_eq!(cube.within_distance(&moved, c), !pairs.is_empty());
     }
 }

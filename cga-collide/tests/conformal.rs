@@ -11,7 +11,7 @@ use cga_collide::conformal::{
 };
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::GeometryError;
+use cga_collide::Error;
 use num_traits::{Signed, ToPrimitive, Zero};
 use proptest::prelude::*;
 
@@ -34,18 +34,18 @@ fn constructors_reject_bad_input() {
     let nan = p3(0.0, f64::NAN, 0.0);
     assert!(matches!(
         Line::from_points(o, nan),
-        Err(GeometryError::NonFiniteInput {
+        Err(Error::NonFiniteInput {
             argument: "b.y",
             ..
         })
     ));
     assert!(matches!(
         Line::from_points(o, o),
-        Err(GeometryError::Degenerate { .. })
+        Err(Error::Degenerate { .. })
     ));
     assert!(matches!(
         Line::from_point_direction(o, Vector3::zeros()),
-        Err(GeometryError::Degenerate { .. })
+        Err(Error::Degenerate { .. })
     ));
     // Collinear, decided exactly even with non-representable-looking coordinates.
     assert!(Plane::from_points(o, p3(0.1, 0.2, 0.3), p3(0.2, 0.4, 0.6)).is_err());
@@ -56,11 +56,11 @@ fn constructors_reject_bad_input() {
     assert!(Plane::from_points(a, b, c).is_ok());
     assert!(matches!(
         Plane::from_normal_offset(Vector3::zeros(), 1.0),
-        Err(GeometryError::Degenerate { .. })
+        Err(Error::Degenerate { .. })
     ));
     assert!(matches!(
         Plane::from_normal_offset(Vector3::x(), f64::INFINITY),
-        Err(GeometryError::NonFiniteInput { argument: "d", .. })
+        Err(Error::NonFiniteInput { argument: "d", .. })
     ));
     assert!(Sphere::from_centre_radius(o, -1.0).is_err());
     assert!(Sphere::from_centre_radius(o, f64::NAN).is_err());

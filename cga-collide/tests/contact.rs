@@ -1,8 +1,9 @@
 //! Contact classes of closed meshes against the closed-form truth for axis-aligned boxes
 //! (touching faces, edges and vertices included), and the exact intersection geometry.
 
+use cga_collide::collider::{Collider, Contact};
 use cga_collide::nalgebra::Point3;
-use cga_collide::query::{self, Collider, Contact, ContactGeometry};
+use cga_collide::query::{self, ContactGeometry};
 use cga_collide::{TriMesh, Triangle};
 use proptest::prelude::*;
 
@@ -46,7 +47,7 @@ proptest! {
 
     #[test]
     fn boxes_match_the_closed_form(a in placed_box(), b in placed_box()) {
-        let got = query::contact_class(&cuboid(a.0, a.1), &cuboid(b.0, b.1));
+        let got = cuboid(a.0, a.1).contact_class(&cuboid(b.0, b.1));
         prop_assert_eq!(got, truth(a, b));
     }
 }
@@ -341,7 +342,7 @@ proptest! {
     /// edges lying on faces and edges crossing edges are common, and so are inscribed solids.
     #[test]
     fn convex_solids_match_the_separating_axis_truth(a in placed_solid(), b in placed_solid()) {
-        let got = query::contact_class(&a.collider(), &b.collider());
+        let got = (a.collider()).contact_class(&b.collider());
         prop_assert_eq!(got, convex_truth(&a, &b));
     }
 }
@@ -354,7 +355,7 @@ fn an_inscribed_tetrahedron_penetrates_its_cube() {
     let tetra = place(2, 0, 1, [0, 0, 0], false);
     assert_eq!(convex_truth(&tetra, &cube), Contact::Penetrating);
     assert_eq!(
-        query::contact_class(&tetra.collider(), &cube.collider()),
+        (tetra.collider()).contact_class(&cube.collider()),
         Contact::Penetrating
     );
 }
@@ -367,7 +368,7 @@ fn an_octahedron_on_the_face_centres_penetrates_its_cube() {
     let octahedron = place(3, 0, 1, [0, 0, 0], true);
     assert_eq!(convex_truth(&octahedron, &cube), Contact::Penetrating);
     assert_eq!(
-        query::contact_class(&octahedron.collider(), &cube.collider()),
+        (octahedron.collider()).contact_class(&cube.collider()),
         Contact::Penetrating
     );
 }
@@ -485,7 +486,7 @@ proptest! {
     /// Non-convex solids: reflex edges against faces, edges and reflex edges.
     #[test]
     fn polycubes_match_the_cell_truth(a in placed_polycube(), b in placed_polycube()) {
-        let got = query::contact_class(&a.collider(), &b.collider());
+        let got = (a.collider()).contact_class(&b.collider());
         prop_assert_eq!(got, cells_truth(&a, &b));
     }
 }

@@ -2,8 +2,8 @@
 //! mesh test (`Collider::collides_solid`) on random rigid placements of convex solids, and on
 //! touching and nested constructions where the certificates must give way to the exact test.
 
-use cga_collide::query::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
-use cga_collide::query::{Collider, Mode};
+use cga_collide::collider::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
@@ -97,7 +97,7 @@ fn placed(s: &Solid, iso: &Isometry3<f64>) -> Solid {
 fn exhaustive(a: &Solid, b: &Solid) -> bool {
     let c =
         |s: &Solid| Collider::new(TriMesh::new(s.vertices.clone(), s.triangles.clone()).unwrap());
-    c(a).collides_solid(&c(b), Mode::Brute)
+    c(a).with_mode(Mode::Brute).collides_solid(&c(b))
 }
 
 fn reference(a: &Solid, b: &Solid) -> (bool, Certificate) {

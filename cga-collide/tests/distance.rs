@@ -1,9 +1,10 @@
 //! Minimum distance: the exact rational distance of the oracle lies within the reported
 //! certified bound; the exact variant equals the oracle; meshes agree with brute force.
 
+use cga_collide::collider::Collider;
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Real};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
-use cga_collide::query::{self, Collider, Distance};
+use cga_collide::query;
 use cga_collide::testing::oracle;
 use cga_collide::{Ball, Segment, Sphere, TriMesh, Triangle};
 use proptest::prelude::*;
@@ -33,7 +34,7 @@ fn q(x: f64) -> Rational {
 }
 
 /// `d - e <= true distance <= d + e`, checked on squares in exact rationals.
-fn within_bound(d: &Distance, exact2: &Rational) -> Result<(), TestCaseError> {
+fn within_bound(d: &query::CertifiedDistance, exact2: &Rational) -> Result<(), TestCaseError> {
     let hi = q(d.distance) + q(d.error_bound);
     prop_assert!(exact2 <= &(&hi * &hi), "above the bound: {:?}", d);
     let lo = q(d.distance) - q(d.error_bound);
@@ -88,7 +89,8 @@ fn brute_exact(a: &Collider, b: &Collider) -> Rational {
     let mut best: Option<Rational> = None;
     for i in 0..a.mesh().num_triangles() {
         for j in 0..b.mesh().num_triangles() {
-            let d = oracle::hulls_distance2(&a.mesh().triangle(i), &b.mesh().triangle(j));
+            let d =
+                oracle::hulls_distance2(&a.mesh().corners(i as u32), &b.mesh().corners(j as u32));
             if best.as_ref().is_none_or(|b| &d < b) {
                 best = Some(d);
             }
@@ -111,13 +113,13 @@ proptest! {
             .placed(&Isometry3::new(Vector3::new(t.0, t.1, t.2), Vector3::new(r.0, r.1, r.2)))
             .unwrap();
         let exact = brute_exact(&cube, &moved);
-        let d = query::mesh_distance(&cube, &moved).unwrap();
+        let d = cube.distance(&moved).unwrap();
         within_bound(&d, &exact)?;
         let (i, j) = d.triangles.unwrap();
-        let pair = oracle::hulls_distance2(&cube.mesh().triangle(i as usize),
-                                           &moved.mesh().triangle(j as usize));
+        let pair = oracle::hulls_distance2(&cube.mesh().corners(i),
+                                           &moved.mesh().corners(j));
         prop_assert!((Real::to_f64(&pair).sqrt() - d.distance).abs() <= d.error_bound);
-        let e = query::exact_mesh_distance(&cube, &moved).unwrap();
+        let e = cube.exact_distance(&moved).unwrap();
         prop_assert_eq!(e.distance2, exact);
     }
 }
@@ -137,7 +139,7 @@ proptest! {
         let moved = cube.placed(&Isometry3::translation(v.x, v.y, v.z)).unwrap();
         // Brute force with the exact pairwise distance (checked against the oracle above).
         let tri = |c: &Collider, i| {
-            let [a, b, c] = c.mesh().triangle(i);
+            let [a, b, c] = c.mesh().corners(i as u32);
             Triangle::new(a, b, c).unwrap()
         };
         let exact = (0..12)
@@ -145,9 +147,9 @@ proptest! {
             .map(|(i, j)| query::exact_distance_triangle_triangle(&tri(&cube, i), &tri(&moved, j)).distance2)
             .min()
             .unwrap();
-        let d = query::mesh_distance(&cube, &moved).unwrap();
+        let d = cube.distance(&moved).unwrap();
         within_bound(&d, &exact)?;
-        prop_assert_eq!(query::exact_mesh_distance(&cube, &moved).unwrap().distance2, exact);
+        prop_assert_eq!(cube.exact_distance(&moved).unwrap().distance2, exact);
     }
 }
 
@@ -168,19 +170,11 @@ fn bunny_against_a_moved_copy_agrees_with_brute_force_pair() {
     let bunny = TriMesh::bunny00().unit();
     let a = Collider::new(bunny.clone());
     let b = a.placed(&Isometry3::translation(1.2, 0.1, 0.0)).unwrap();
-    let d = query::mesh_distance(&a, &b).unwrap();
+    let d = a.distance(&b).unwrap();
     assert!(d.distance > 0.0 && d.error_bound < 1e-12 * d.distance.max(1.0));
     // No pair is closer than the certified lower end, and some pair is within the upper end.
-    assert!(!query::meshes_within_distance(
-        &a,
-        &b,
-        d.distance - 2.0 * d.error_bound
-    ));
-    assert!(query::meshes_within_distance(
-        &a,
-        &b,
-        d.distance + d.error_bound
-    ));
+    assert!(!a.within_distance(&b, d.distance - 2.0 * d.error_bound));
+    assert!(a.within_distance(&b, d.distance + d.error_bound));
 }
 
 // ---------------------------------------------------------------- balls and spheres
@@ -231,7 +225,7 @@ impl Radial {
         })
     }
 
-    fn check(&self, d: &Distance) -> Result<(), TestCaseError> {
+    fn check(&self, d: &query::CertifiedDistance) -> Result<(), TestCaseError> {
         // The witnesses are (up to rounding) as far apart as the distance.
         let w = dist2(&d.witness_a, &d.witness_b).sqrt();
         prop_assert!((w - d.distance).abs() <= 1e-9, "witnesses {:?}", d);

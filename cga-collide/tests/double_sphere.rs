@@ -3,6 +3,7 @@
 
 use std::sync::OnceLock;
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::enclosing::{
     smallest_enclosing_ball, smallest_enclosing_ball_brute,
 };
@@ -11,7 +12,6 @@ use cga_collide::hierarchy::double_sphere::{
     collide, collide_with, Decision, DoubleSphereTree, InnerSphereKind, Scratch,
 };
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::shape::polyhedron::{ConvexPolyhedron, PolyhedronError};
 use cga_collide::{Intersects, Triangle};
@@ -181,24 +181,17 @@ fn brute(
     let ma: TriMesh = a.to_trimesh().transformed(pa).unwrap();
     let mb: TriMesh = b.to_trimesh().transformed(pb).unwrap();
     let ta: Vec<Triangle> = (0..ma.num_triangles())
-        .map(|i| {
-            let [x, y, z] = ma.triangle(i);
-            Triangle::new(x, y, z).unwrap()
-        })
+        .map(|i| ma.triangle(i as u32))
         .collect();
     let tb: Vec<Triangle> = (0..mb.num_triangles())
-        .map(|i| {
-            let [x, y, z] = mb.triangle(i);
-            Triangle::new(x, y, z).unwrap()
-        })
+        .map(|i| mb.triangle(i as u32))
         .collect();
     if ta.iter().any(|x| tb.iter().any(|y| x.intersects(y))) {
         return true;
     }
     let ca = Collider::new(ma.clone());
     let cb = Collider::new(mb.clone());
-    cb.contains_point(&ma.vertices()[0], Mode::Bvh)
-        || ca.contains_point(&mb.vertices()[0], Mode::Bvh)
+    cb.contains_point(&ma.vertices()[0]) || ca.contains_point(&mb.vertices()[0])
 }
 
 fn pose(t: [f64; 3], axis: [f64; 3], angle: f64) -> Isometry3<f64> {

@@ -1,12 +1,12 @@
 //! Every public error type's message says what was wrong, where (file, line, argument, index)
 //! and what to do about it.
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind, MAX_LEVEL};
 use cga_collide::hierarchy::sphere_tree::format::read;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions, MAX_DEPTH};
 use cga_collide::mesh::{MeshFormat, TriMesh};
 use cga_collide::nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion};
-use cga_collide::query::Collider;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::{Ball, Segment, Sphere};
 

@@ -6,8 +6,8 @@ use cga_collide::exact::{
     exact_sign, rational_exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Predicate,
 };
 use cga_collide::nalgebra::Point3;
-use cga_collide::query::baseline;
 use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs};
+use cga_collide::testing::baseline;
 use cga_collide::testing::oracle::{self, Shape};
 use cga_collide::{Ball, Intersects, IntersectsWith, Segment, Sphere, Triangle};
 use proptest::prelude::*;

@@ -6,10 +6,10 @@
 //! message otherwise.
 #![cfg(feature = "gpu")]
 
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::gpu::{shader_source, Device, GpuError, Precision, Query};
 use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::testing::adversarial::{adversarial_set, Case};
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use ga_core::cga::{self, wgsl};
@@ -143,7 +143,7 @@ fn mesh_pairs_match_the_cpu_brute_force_and_hierarchy() {
         for (angle, shift) in [(0.3, 0.02), (1.1, 0.1), (0.0, 0.0)] {
             let b = placed(&small_bunny(250), angle, shift);
             let (ca, cb) = (Collider::new(a.clone()), Collider::new(b.clone()));
-            let expected = ca.intersecting_pairs(&cb, Mode::Brute);
+            let expected = ca.clone().with_mode(Mode::Brute).intersecting_pairs(&cb);
             let all = device.intersecting_pairs(&a, &b).expect("batch");
             assert_eq!(all.hits, expected, "all pairs, angle {angle}");
             assert_eq!(all.tested, 300 * 250);
@@ -178,7 +178,7 @@ fn queries_against_a_mesh_match_the_cpu() {
         Segment::new(p(0.0, -1.0, 0.0), p(0.0, 1.0, 0.0)).unwrap(),
         // Along an edge of the mesh: touching configurations.
         {
-            let [a, b, _] = mesh.triangle(5);
+            let [a, b, _] = mesh.corners(5);
             Segment::new(a, b).unwrap()
         },
     ];
@@ -186,28 +186,44 @@ fn queries_against_a_mesh_match_the_cpu() {
         Triangle::new(p(-1.0, 0.0, -1.0), p(1.0, 0.0, -1.0), p(0.0, 0.0, 1.0)).unwrap(),
         // One of the mesh's own triangles: shares vertices and edges with its neighbours.
         {
-            let [a, b, c] = mesh.triangle(10);
+            let [a, b, c] = mesh.corners(10);
             Triangle::new(a, b, c).unwrap()
         },
     ];
-    let centres = [p(0.0, 0.0, 0.0), p(0.1, 0.2, -0.1), mesh.triangle(3)[0]];
+    let centres = [p(0.0, 0.0, 0.0), p(0.1, 0.2, -0.1), mesh.corners(3)[0]];
     for device in devices() {
         for s in &segments {
             let batch = device.hits(&(*s).into(), &mesh).expect("batch");
-            assert_eq!(batch.hits, collider.segment_hits(s, Mode::Brute), "{s:?}");
+            assert_eq!(
+                batch.hits,
+                collider.clone().with_mode(Mode::Brute).segment_hits(s),
+                "{s:?}"
+            );
         }
         for t in &triangles {
             let batch = device.hits(&(*t).into(), &mesh).expect("batch");
-            assert_eq!(batch.hits, collider.triangle_hits(t, Mode::Brute), "{t:?}");
+            assert_eq!(
+                batch.hits,
+                collider.clone().with_mode(Mode::Brute).triangle_hits(t),
+                "{t:?}"
+            );
         }
         for c in centres {
             for r in [0.05, 0.2, 0.5] {
                 let s = Sphere::new(c, r).unwrap();
                 let batch = device.hits(&s.into(), &mesh).expect("batch");
-                assert_eq!(batch.hits, collider.sphere_hits(&s, Mode::Brute), "{s:?}");
+                assert_eq!(
+                    batch.hits,
+                    collider.clone().with_mode(Mode::Brute).sphere_hits(&s),
+                    "{s:?}"
+                );
                 let b = Ball::new(c, r).unwrap();
                 let batch = device.hits(&b.into(), &mesh).expect("batch");
-                assert_eq!(batch.hits, collider.ball_hits(&b, Mode::Brute), "{b:?}");
+                assert_eq!(
+                    batch.hits,
+                    collider.clone().with_mode(Mode::Brute).ball_hits(&b),
+                    "{b:?}"
+                );
             }
         }
     }

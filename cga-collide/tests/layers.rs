@@ -23,7 +23,7 @@ const LAYERS: &[&str] = &[
 
 /// Crate-root re-exports and the layer they come from.
 const ROOT_REEXPORTS: &[(&str, &str)] = &[
-    ("GeometryError", "error"),
+    ("Error", "error"),
     ("Intersects", "query"),
     ("IntersectsWith", "query"),
     ("mesh", "shape"),
@@ -140,7 +140,7 @@ fn top_modules_use_only_lower_layers() {
 
 #[test]
 fn crate_paths_reads_single_and_grouped_uses() {
-    assert_eq!(crate_paths("use crate::query::Collider;"), ["query"]);
+    assert_eq!(crate_paths("use crate::collider::Collider;"), ["query"]);
     assert_eq!(
         crate_paths("use crate::{Ball, bvh::Aabb};"),
         ["Ball".to_string(), "bvh".to_string()]

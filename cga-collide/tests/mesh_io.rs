@@ -1,6 +1,7 @@
 //! Loader tests: every format, its errors, agreement between formats, and malformed input.
 
-use cga_collide::shape::mesh::{MeshError, MeshFormat, TriMesh};
+use cga_collide::shape::mesh::{MeshFormat, TriMesh};
+use cga_collide::Error;
 use nalgebra::Point3;
 use proptest::prelude::*;
 
@@ -91,7 +92,7 @@ fn stl_binary(m: &TriMesh) -> Vec<u8> {
     out.extend((m.num_triangles() as u32).to_le_bytes());
     for k in 0..m.num_triangles() {
         out.extend([0u8; 12]);
-        for p in m.triangle(k) {
+        for p in m.corners(k as u32) {
             for c in [p.x, p.y, p.z] {
                 out.extend((c as f32).to_le_bytes());
             }
@@ -105,7 +106,7 @@ fn stl_ascii(m: &TriMesh) -> Vec<u8> {
     let mut s = String::from("solid test\n");
     for k in 0..m.num_triangles() {
         s += "  facet normal 0 0 1\n    outer loop\n";
-        for p in m.triangle(k) {
+        for p in m.corners(k as u32) {
             s += &format!(
                 "      vertex {:?} {:?} {:?}\n",
                 p.x as f32, p.y as f32, p.z as f32
@@ -120,7 +121,7 @@ fn stl_ascii(m: &TriMesh) -> Vec<u8> {
 /// Same triangles, corner by corner (OBJ and STL renumber vertices).
 fn same_geometry(a: &TriMesh, b: &TriMesh) -> bool {
     a.num_triangles() == b.num_triangles()
-        && (0..a.num_triangles()).all(|k| a.triangle(k) == b.triangle(k))
+        && (0..a.num_triangles()).all(|k| a.corners(k as u32) == b.corners(k as u32))
 }
 
 fn tetra() -> TriMesh {
@@ -190,7 +191,7 @@ fn all_formats_agree_on_a_mesh() {
         let got = TriMesh::from_bytes(&bytes, MeshFormat::Stl, "t.stl").unwrap();
         assert_eq!(got.vertices().len(), 4);
         for k in 0..4 {
-            assert_eq!(got.triangle(k), m.triangle(k));
+            assert_eq!(got.corners(k), m.corners(k));
         }
     }
 }
@@ -208,51 +209,49 @@ fn off_variants() {
     assert_eq!(m.triangles(), &[[0, 1, 1]]);
 }
 
-fn off_err(text: &str) -> MeshError {
+fn off_err(text: &str) -> Error {
     TriMesh::from_bytes(text.as_bytes(), MeshFormat::Off, "bad.off").unwrap_err()
 }
 
 #[test]
 fn off_errors_name_file_line_and_index() {
     let e = off_err("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n");
-    assert!(
-        matches!(&e, MeshError::BadNumber { at, token, .. } if at.line == Some(4) && token == "x")
-    );
+    assert!(matches!(&e, Error::BadNumber { at, token, .. } if at.line == Some(4) && token == "x"));
     assert!(e.to_string().starts_with("bad.off:4:"), "{e}");
 
     let e = off_err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
     assert!(
-        matches!(&e, MeshError::IndexOutOfRange { at, face: 0, index: 3, vertex_count: 3 } if at.line == Some(6)),
+        matches!(&e, Error::IndexOutOfRange { at, face: 0, index: 3, vertex_count: 3 } if at.line == Some(6)),
         "{e}"
     );
 
     let e = off_err("OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n");
     assert!(
-        matches!(&e, MeshError::NonFinite { at, vertex: 1, .. } if at.line == Some(4)),
+        matches!(&e, Error::NonFinite { at, vertex: 1, .. } if at.line == Some(4)),
         "{e}"
     );
 
     let e = off_err("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
     assert!(
-        matches!(&e, MeshError::Empty { file } if file == "bad.off"),
+        matches!(&e, Error::Empty { file } if file == "bad.off"),
         "{e}"
     );
 
     let e = off_err("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    assert!(matches!(&e, MeshError::Truncated { .. }), "{e}");
+    assert!(matches!(&e, Error::Truncated { .. }), "{e}");
     assert!(e.to_string().contains("face 1 of 2"), "{e}");
 
     let e = off_err("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n");
     assert!(
-        matches!(&e, MeshError::Syntax { at, .. } if at.line == Some(6)),
+        matches!(&e, Error::Syntax { at, .. } if at.line == Some(6)),
         "{e}"
     );
 
     let e = off_err("OFF\n99999999999999999999999 1 0\n");
-    assert!(matches!(&e, MeshError::BadNumber { .. }), "{e}");
+    assert!(matches!(&e, Error::BadNumber { .. }), "{e}");
     // a lying header must not make us allocate or loop absurdly
     let e = off_err("OFF\n18446744073709551615 18446744073709551615 0\n0 0 0\n");
-    assert!(matches!(&e, MeshError::Truncated { .. }), "{e}");
+    assert!(matches!(&e, Error::Truncated { .. }), "{e}");
 }
 
 #[test]
@@ -268,7 +267,7 @@ fn obj_errors_name_the_line() {
     let m = TriMesh::from_bytes(quad.as_bytes(), MeshFormat::Obj, "q.obj").unwrap();
     assert_eq!(m.num_triangles(), 2);
     let e = TriMesh::from_bytes(b"v 0 0 0\n", MeshFormat::Obj, "e.obj").unwrap_err();
-    assert!(matches!(e, MeshError::Empty { .. }), "{e}");
+    assert!(matches!(e, Error::Empty { .. }), "{e}");
 }
 
 #[test]
@@ -277,7 +276,7 @@ fn ply_and_stl_errors() {
     let bin = ply_binary(&m, false);
     let e = TriMesh::from_bytes(&bin[..bin.len() - 3], MeshFormat::Ply, "t.ply").unwrap_err();
     assert!(
-        matches!(&e, MeshError::Truncated { at, .. } if at.byte.is_some()),
+        matches!(&e, Error::Truncated { at, .. } if at.byte.is_some()),
         "{e}"
     );
     assert!(e.to_string().contains("face 3 of 4"), "{e}");
@@ -286,7 +285,7 @@ fn ply_and_stl_errors() {
         .replace("3 1 2 3", "3 1 2 9");
     let e = TriMesh::from_bytes(ascii.as_bytes(), MeshFormat::Ply, "t.ply").unwrap_err();
     assert!(
-        matches!(&e, MeshError::IndexOutOfRange { face: 2, index: 9, at, .. } if at.line == Some(17)),
+        matches!(&e, Error::IndexOutOfRange { face: 2, index: 9, at, .. } if at.line == Some(17)),
         "{e}"
     );
     let e = TriMesh::from_bytes(
@@ -296,19 +295,19 @@ fn ply_and_stl_errors() {
     )
     .unwrap_err();
     assert!(
-        matches!(&e, MeshError::BadNumber { at, .. } if at.line == Some(3)),
+        matches!(&e, Error::BadNumber { at, .. } if at.line == Some(3)),
         "{e}"
     );
 
     let stl = stl_binary(&m);
     let e = TriMesh::from_bytes(&stl[..stl.len() - 10], MeshFormat::Stl, "t.stl").unwrap_err();
-    assert!(matches!(&e, MeshError::Truncated { .. }), "{e}");
+    assert!(matches!(&e, Error::Truncated { .. }), "{e}");
     let ascii = String::from_utf8(stl_ascii(&m))
         .unwrap()
         .replacen("vertex 1.0", "vertex 1.q", 1);
     let e = TriMesh::from_bytes(ascii.as_bytes(), MeshFormat::Stl, "t.stl").unwrap_err();
     assert!(
-        matches!(&e, MeshError::BadNumber { at, .. } if at.line.is_some()),
+        matches!(&e, Error::BadNumber { at, .. } if at.line.is_some()),
         "{e}"
     );
 }
@@ -326,9 +325,9 @@ fn format_from_extension() {
     );
     assert_eq!(MeshFormat::from_path(Path::new("b.txt")), None);
     let e = TriMesh::load("nowhere/b.txt").unwrap_err();
-    assert!(matches!(e, MeshError::UnknownFormat { .. }), "{e}");
+    assert!(matches!(e, Error::UnknownFormat { .. }), "{e}");
     let e = TriMesh::load("nowhere/b.stl").unwrap_err();
-    assert!(matches!(e, MeshError::Io { .. }), "{e}");
+    assert!(matches!(e, Error::Io { .. }), "{e}");
 }
 
 /// Valid seed files of every format, from a small random mesh.

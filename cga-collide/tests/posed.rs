@@ -2,8 +2,9 @@
 //! (`Collider::placed`) and asking the placed copies answers, and what brute force answers, on
 //! random poses including touching and coplanar contacts.
 
-use cga_collide::query::{BatchError, Collider, Mode, PoseError, PosePair};
+use cga_collide::collider::{Collider, Mode, PosePair};
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::Error;
 use cga_collide::{Ball, Segment, Sphere, Triangle};
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
@@ -45,21 +46,20 @@ fn check(
     pb: &Isometry3<f64>,
 ) -> Result<(), TestCaseError> {
     let (wa, wb) = (a.placed(pa).unwrap(), b.placed(pb).unwrap());
-    let want = wa.intersecting_pairs(&wb, Mode::Brute);
-    prop_assert_eq!(&wa.intersecting_pairs(&wb, Mode::Bvh), &want);
+    let want = wa.clone().with_mode(Mode::Brute).intersecting_pairs(&wb);
+    prop_assert_eq!(&wa.intersecting_pairs(&wb), &want);
     prop_assert_eq!(&a.intersecting_pairs_at(pa, b, pb).unwrap(), &want);
-    prop_assert_eq!(
-        &a.intersecting_pairs_at_sequential(pa, b, pb).unwrap(),
-        &want
+    let (ba, bb) = (
+        a.clone().with_mode(Mode::Brute),
+        b.clone().with_mode(Mode::Brute),
     );
+    prop_assert_eq!(&ba.intersecting_pairs_at(pa, &bb, pb).unwrap(), &want);
+    prop_assert_eq!(ba.collides_at(pa, &bb, pb).unwrap(), !want.is_empty());
     prop_assert_eq!(a.collides_at(pa, b, pb).unwrap(), !want.is_empty());
-    prop_assert_eq!(
-        a.collides_at(pa, b, pb).unwrap(),
-        wa.collides(&wb, Mode::Bvh)
-    );
+    prop_assert_eq!(a.collides_at(pa, b, pb).unwrap(), wa.collides(&wb));
     prop_assert_eq!(
         a.collides_solid_at(pa, b, pb).unwrap(),
-        wa.collides_solid(&wb, Mode::Brute)
+        wa.clone().with_mode(Mode::Brute).collides_solid(&wb)
     );
     Ok(())
 }
@@ -153,7 +153,7 @@ fn batches_answer_each_pose() {
         let want = b
             .placed(&p.a)
             .unwrap()
-            .intersecting_pairs(&b.placed(&p.b).unwrap(), Mode::Bvh);
+            .intersecting_pairs(&b.placed(&p.b).unwrap());
         assert_eq!(pairs[k], want);
         assert_eq!(hits[k], !want.is_empty());
     }
@@ -161,9 +161,9 @@ fn batches_answer_each_pose() {
     bad[5].b.translation.vector.y = f64::INFINITY;
     assert_eq!(
         b.collides_batch(&b, &bad),
-        Err(BatchError {
+        Err(Error::InBatch {
             index: 5,
-            source: PoseError::NonFinite
+            source: Box::new(Error::NonFinitePose)
         })
     );
 }
@@ -207,22 +207,22 @@ proptest! {
             let (u, w) = (vs[k % vs.len()], vs[l % vs.len()]);
             let x = Point3::from(q);
             for s in [Segment::new(u, w).unwrap(), Segment::new(x, u).unwrap(), Segment::new(u, u).unwrap()] {
-                let want = placed.segment_hits(&s, Mode::Brute);
-                prop_assert_eq!(&placed.segment_hits(&s, Mode::Bvh), &want);
+                let want = placed.clone().with_mode(Mode::Brute).segment_hits(&s);
+                prop_assert_eq!(&placed.segment_hits(&s), &want);
                 prop_assert_eq!(&c.segment_hits_at(&pose, &s).unwrap(), &want);
             }
             let t = Triangle::new(u, w, x).unwrap();
-            prop_assert_eq!(c.triangle_hits_at(&pose, &t).unwrap(), placed.triangle_hits(&t, Mode::Brute));
+            prop_assert_eq!(c.triangle_hits_at(&pose, &t).unwrap(), placed.clone().with_mode(Mode::Brute).triangle_hits(&t));
             for centre in [u, x] {
                 let s = Sphere::new(centre, r).unwrap();
-                prop_assert_eq!(c.sphere_hits_at(&pose, &s).unwrap(), placed.sphere_hits(&s, Mode::Brute));
+                prop_assert_eq!(c.sphere_hits_at(&pose, &s).unwrap(), placed.clone().with_mode(Mode::Brute).sphere_hits(&s));
                 let bl = Ball::new(centre, r).unwrap();
-                prop_assert_eq!(c.ball_hits_at(&pose, &bl).unwrap(), placed.ball_hits(&bl, Mode::Brute));
+                prop_assert_eq!(c.ball_hits_at(&pose, &bl).unwrap(), placed.clone().with_mode(Mode::Brute).ball_hits(&bl));
             }
             for point in [u, x, nalgebra::center(&u, &w)] {
                 prop_assert_eq!(
                     c.contains_point_at(&pose, &point).unwrap(),
-                    placed.contains_point(&point, Mode::Brute)
+                    placed.clone().with_mode(Mode::Brute).contains_point(&point)
                 );
             }
         }

@@ -5,8 +5,9 @@
 //! meshes, cubes at exactly distance `c` (dyadic translations, exact and quarter-turn
 //! rotations), bad clearances and bad poses.
 
-use cga_collide::query::{self, Collider, PoseError};
+use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::Error;
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
@@ -22,16 +23,13 @@ fn check(
     c: f64,
 ) -> Result<Vec<(u32, u32)>, TestCaseError> {
     let (wa, wb) = (a.placed(pa).unwrap(), b.placed(pb).unwrap());
-    let want = query::mesh_pairs_within_distance(&wa, &wb, c);
+    let want = wa.pairs_within_distance(&wb, c);
     prop_assert_eq!(&a.pairs_within_distance_at(pa, b, pb, c).unwrap(), &want);
     prop_assert_eq!(
         a.within_distance_at(pa, b, pb, c).unwrap(),
-        query::meshes_within_distance(&wa, &wb, c)
+        wa.within_distance(&wb, c)
     );
-    prop_assert_eq!(
-        a.distance_at(pa, b, pb).unwrap(),
-        query::mesh_distance(&wa, &wb)
-    );
+    prop_assert_eq!(a.distance_at(pa, b, pb).unwrap(), wa.distance(&wb).unwrap());
     Ok(want)
 }
 
@@ -104,7 +102,7 @@ proptest! {
         let tb = t.map(|v| f64::from(v) * 0.125);
         let pa = Isometry3::from_parts(Translation3::identity(), lattice_rotation(k));
         let pb = Isometry3::from_parts(Translation3::new(tb[0], tb[1], tb[2]), lattice_rotation(l));
-        let d = query::mesh_distance(&a.placed(&pa).unwrap(), &b.placed(&pb).unwrap()).unwrap();
+        let d = a.placed(&pa).unwrap().distance(&b.placed(&pb).unwrap()).unwrap();
         for c in [d.distance, d.distance.next_down(), d.distance.next_up(), 0.125, 0.25] {
             check(&a, &pa, &b, &pb, c)?;
         }
@@ -136,7 +134,7 @@ fn exact_gaps_are_found_without_placing() {
     let pb = Isometry3::from_parts(Translation3::new(2.5, 0.0, 0.0), lattice_rotation(4));
     let placed = a.placed(&pb).unwrap();
     let at = a.pairs_within_distance_at(&id, &a, &pb, 0.5).unwrap();
-    assert_eq!(at, query::mesh_pairs_within_distance(&a, &placed, 0.5));
+    assert_eq!(at, a.pairs_within_distance(&placed, 0.5));
     // The placed coordinates are rounded: whatever the gap is exactly, both agree on it, and
     // a half turn (exact) gives exactly 1/2: B is [1.5, 2.5] × [0, 1] × [0, 1].
     let half = Isometry3::from_parts(Translation3::new(2.5, 1.0, 0.0), lattice_rotation(3));
@@ -152,7 +150,7 @@ fn exact_gaps_are_found_without_placing() {
     assert!(!a
         .within_distance_at(&id, &a, &half, 0.5f64.next_down())
         .unwrap());
-    let d = a.distance_at(&id, &a, &half).unwrap().unwrap();
+    let d = a.distance_at(&id, &a, &half).unwrap();
     assert_eq!(d.distance, 0.5);
     assert!(d.error_bound < 1e-13);
     check(&a, &id, &a, &half, 0.5).unwrap();
@@ -197,17 +195,23 @@ fn bad_poses_are_typed_errors() {
     );
     let far = Isometry3::translation(0.0, 0.0, 1e300);
     for (p, want) in [
-        (nan, PoseError::NonFinite),
-        (skew, PoseError::NotUnit { norm_squared: 0.25 }),
-        (far, PoseError::OutOfRange { magnitude: 1e300 }),
+        (nan, Error::NonFinitePose),
+        (skew, Error::NotUnitRotation { norm_squared: 0.25 }),
+        (
+            far,
+            Error::OutOfRange {
+                magnitude: 1e300,
+                limit: 2f64.powi(990),
+            },
+        ),
     ] {
         for (pa, pb) in [(&id, &p), (&p, &id)] {
             // Bad poses win over bad clearances, as `placed()?` comes first.
             for c in [0.5, f64::NAN, -1.0, f64::INFINITY] {
-                assert_eq!(a.pairs_within_distance_at(pa, &a, pb, c), Err(want));
-                assert_eq!(a.within_distance_at(pa, &a, pb, c), Err(want));
+                assert_eq!(a.pairs_within_distance_at(pa, &a, pb, c), Err(want.clone()));
+                assert_eq!(a.within_distance_at(pa, &a, pb, c), Err(want.clone()));
             }
-            assert_eq!(a.distance_at(pa, &a, pb), Err(want));
+            assert_eq!(a.distance_at(pa, &a, pb), Err(want.clone()));
         }
     }
 }
@@ -219,11 +223,11 @@ fn ties_pick_the_smallest_pair_in_both() {
     let id = Isometry3::identity();
     for t in [[1.5, 0.0, 0.0], [1.25, 0.5, 0.0], [0.0, 0.0, -1.75]] {
         let pb = Isometry3::translation(t[0], t[1], t[2]);
-        let d = a.distance_at(&id, &a, &pb).unwrap().unwrap();
+        let d = a.distance_at(&id, &a, &pb).unwrap();
         let placed = a.placed(&pb).unwrap();
-        assert_eq!(Some(d), query::mesh_distance(&a, &placed));
+        assert_eq!(d, a.distance(&placed).unwrap());
         // The smallest pair among those at that distance.
-        let ties = query::mesh_pairs_within_distance(&a, &placed, d.distance);
+        let ties = a.pairs_within_distance(&placed, d.distance);
         assert!(ties.len() > 1, "{t:?}");
         assert_eq!(d.triangles, Some(ties[0]), "{t:?}");
     }

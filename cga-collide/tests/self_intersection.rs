@@ -4,7 +4,8 @@
 
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Ring};
 use cga_collide::nalgebra::Point3;
-use cga_collide::query::{self, Collider};
+
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::TriMesh;
 use num_traits::Signed;
 use proptest::prelude::*;
@@ -105,7 +106,7 @@ fn oracle(p: &[Q3; 3], r: &[Q3; 3]) -> bool {
 
 fn oracle_pairs(mesh: &TriMesh) -> Vec<(u32, u32)> {
     let tris: Vec<[Q3; 3]> = (0..mesh.num_triangles())
-        .map(|i| mesh.triangle(i).map(|p| q3(&p)))
+        .map(|i| mesh.corners(i as u32).map(|p| q3(&p)))
         .collect();
     let mut out = Vec::new();
     for i in 0..tris.len() {
@@ -159,10 +160,10 @@ proptest! {
     #[test]
     fn matches_the_rational_oracle(mesh in lattice_mesh()) {
         let c = Collider::new(mesh.clone());
-        let pairs = query::self_intersections(&c);
+        let pairs = c.self_intersections();
         prop_assert_eq!(&pairs, &oracle_pairs(&mesh));
-        prop_assert_eq!(query::self_intersects(&c), !pairs.is_empty());
-        prop_assert_eq!(&query::self_intersections_brute(&c), &pairs);
+        prop_assert_eq!(c.self_intersects(), !pairs.is_empty());
+        prop_assert_eq!(&c.clone().with_mode(Mode::Brute).self_intersections(), &pairs);
     }
 }
 
@@ -173,8 +174,12 @@ fn p(x: f64, y: f64, z: f64) -> Point3<f64> {
 #[test]
 fn closed_meshes_without_self_intersection() {
     let cube = TriMesh::cuboid(p(0., 0., 0.), p(1., 1., 1.)).unwrap();
-    assert!(query::self_intersections(&Collider::new(cube.subdivided())).is_empty());
-    assert!(query::self_intersections(&Collider::new(TriMesh::bunny00())).is_empty());
+    assert!(Collider::new(cube.subdivided())
+        .self_intersections()
+        .is_empty());
+    assert!(Collider::new(TriMesh::bunny00())
+        .self_intersections()
+        .is_empty());
 }
 
 #[test]
@@ -189,7 +194,7 @@ fn adjacent_triangles() {
     ];
     let check = |tris: Vec<[u32; 3]>, expected: Vec<(u32, u32)>| {
         let mesh = TriMesh::new(v.clone(), tris).unwrap();
-        assert_eq!(query::self_intersections(&Collider::new(mesh)), expected);
+        assert_eq!(Collider::new(mesh).self_intersections(), expected);
     };
     // Shared edge, opposite sides in the plane: only the edge.
     check(vec![[0, 1, 2], [1, 0, 4]], vec![]);
@@ -208,8 +213,5 @@ fn adjacent_triangles() {
         p(1., 0.5, -1.),
     ];
     let mesh = TriMesh::new(w, vec![[0, 1, 2], [0, 3, 4]]).unwrap();
-    assert_eq!(
-        query::self_intersections(&Collider::new(mesh)),
-        vec![(0, 1)]
-    );
+    assert_eq!(Collider::new(mesh).self_intersections(), vec![(0, 1)]);
 }

@@ -1,7 +1,7 @@
 //! Constructors: bad input is rejected with a typed error naming the argument.
 
 use cga_collide::nalgebra::Point3;
-use cga_collide::{query::baseline, Ball, GeometryError, Segment, Sphere, Triangle};
+use cga_collide::{testing::baseline, Ball, Error, Segment, Sphere, Triangle};
 
 #[test]
 fn rejects_non_finite_coordinates_naming_the_argument() {
@@ -10,7 +10,7 @@ fn rejects_non_finite_coordinates_naming_the_argument() {
     let e = Segment::new(o, bad).unwrap_err();
     assert_eq!(
         e,
-        GeometryError::NonFiniteCoordinate {
+        Error::NonFiniteCoordinate {
             shape: "Segment",
             argument: "b",
             axis: "z",
@@ -21,7 +21,7 @@ fn rejects_non_finite_coordinates_naming_the_argument() {
     let e = Triangle::new(Point3::new(f64::NAN, 0.0, 0.0), o, o).unwrap_err();
     assert!(matches!(
         e,
-        GeometryError::NonFiniteCoordinate {
+        Error::NonFiniteCoordinate {
             argument: "a",
             axis: "x",
             ..
@@ -29,7 +29,7 @@ fn rejects_non_finite_coordinates_naming_the_argument() {
     ));
     assert!(matches!(
         Sphere::new(bad, 1.0),
-        Err(GeometryError::NonFiniteCoordinate {
+        Err(Error::NonFiniteCoordinate {
             shape: "Sphere",
             argument: "centre",
             ..
@@ -37,7 +37,7 @@ fn rejects_non_finite_coordinates_naming_the_argument() {
     ));
     assert!(matches!(
         Ball::new(bad, 1.0),
-        Err(GeometryError::NonFiniteCoordinate { shape: "Ball", .. })
+        Err(Error::NonFiniteCoordinate { shape: "Ball", .. })
     ));
 }
 
@@ -46,14 +46,14 @@ fn rejects_bad_radii() {
     let o = Point3::origin();
     assert_eq!(
         Sphere::new(o, -0.5).unwrap_err(),
-        GeometryError::NegativeRadius {
+        Error::NegativeRadius {
             shape: "Sphere",
             value: -0.5
         }
     );
     assert!(matches!(
         Ball::new(o, f64::INFINITY),
-        Err(GeometryError::NonFiniteRadius { shape: "Ball", .. })
+        Err(Error::NonFiniteRadius { shape: "Ball", .. })
     ));
     assert!(Ball::new(o, f64::NAN)
         .unwrap_err()

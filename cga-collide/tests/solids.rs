@@ -1,6 +1,6 @@
 //! Exact point-in-closed-mesh and solid collision.
 
-use cga_collide::query::{Collider, Mode};
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
 use proptest::prelude::*;
@@ -13,7 +13,7 @@ fn cube(lo: [f64; 3], hi: [f64; 3]) -> TriMesh {
 fn winding(m: &TriMesh, p: &Point3<f64>) -> f64 {
     let mut w = 0.0;
     for k in 0..m.num_triangles() {
-        let [a, b, c] = m.triangle(k).map(|q| q - p);
+        let [a, b, c] = m.corners(k as u32).map(|q| q - p);
         let (la, lb, lc) = (a.norm(), b.norm(), c.norm());
         let num = a.dot(&b.cross(&c));
         let den = la * lb * lc + a.dot(&b) * lc + b.dot(&c) * la + c.dot(&a) * lb;
@@ -50,9 +50,9 @@ fn armadillo_inside_matches_winding_number_away_from_surface() {
         if (w - w.round()).abs() > 0.05 {
             continue; // too close to the surface for the float reference
         }
-        let exact = c.contains_point(&p, Mode::Bvh);
+        let exact = c.contains_point(&p);
         assert_eq!(exact, w.round() as i64 % 2 != 0, "{p:?} winding {w}");
-        assert_eq!(exact, c.contains_point(&p, Mode::Brute));
+        assert_eq!(exact, c.clone().with_mode(Mode::Brute).contains_point(&p));
         inside += usize::from(exact);
     }
     assert!(inside > 0);
@@ -68,14 +68,15 @@ fn nested_solids_collide_without_surface_contact() {
         ))
         .unwrap();
     for mode in [Mode::Brute, Mode::Bvh] {
-        assert!(!big.collides(&small, mode));
-        assert!(big.collides_solid(&small, mode));
-        assert!(small.collides_solid(&big, mode));
+        let (big, small) = (big.clone().with_mode(mode), small.clone().with_mode(mode));
+        assert!(!big.collides(&small));
+        assert!(big.collides_solid(&small));
+        assert!(small.collides_solid(&big));
     }
     let away = small
         .placed(&Isometry3::translation(20.0, 0.0, 0.0))
         .unwrap();
-    assert!(!big.collides_solid(&away, Mode::Bvh));
+    assert!(!big.collides_solid(&away));
 }
 
 proptest! {
@@ -98,8 +99,8 @@ proptest! {
         for q in pts {
             let p = Point3::new(q[0] as f64 * 0.5, q[1] as f64 * 0.5, q[2] as f64 * 0.5);
             let expected = (0..3).all(|k| lo_f[k] <= p[k] && p[k] <= hi_f[k]);
-            prop_assert_eq!(c.contains_point(&p, Mode::Bvh), expected, "{:?}", p);
-            prop_assert_eq!(c.contains_point(&p, Mode::Brute), expected, "{:?}", p);
+            prop_assert_eq!(c.contains_point(&p), expected, "{:?}", p);
+            prop_assert_eq!(c.clone().with_mode(Mode::Brute).contains_point(&p), expected, "{:?}", p);
         }
     }
 
@@ -112,12 +113,12 @@ proptest! {
         let p = Point3::new(x, y, z);
         let local = iso.inverse() * p;
         let r = local.coords.amax();
-        let got = c.contains_point(&p, Mode::Bvh);
-        prop_assert_eq!(got, c.contains_point(&p, Mode::Brute));
+        let got = c.contains_point(&p);
+        prop_assert_eq!(got, c.clone().with_mode(Mode::Brute).contains_point(&p));
         if r < 0.999 { prop_assert!(got); }
         if r > 1.001 { prop_assert!(!got); }
         // vertices of the placed mesh are on it
         let v = c.mesh().vertices()[0];
-        prop_assert!(c.contains_point(&v, Mode::Bvh));
+        prop_assert!(c.contains_point(&v));
     }
 }

@@ -6,13 +6,13 @@
 
 use std::sync::OnceLock;
 
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::hierarchy::sphere_tree::octree::{
     ball_contains_box, build, cell_of, BuildOptions,
 };
 use cga_collide::hierarchy::sphere_tree::tribox::triangle_meets_box;
 use cga_collide::hierarchy::sphere_tree::{collide, CellState, NestedNode, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use proptest::prelude::*;
 
@@ -107,10 +107,11 @@ fn cube(lo: [f64; 3], hi: [f64; 3]) -> TriMesh {
 fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
     let mesh = c.mesh();
     let tris: Vec<[[f64; 3]; 3]> = (0..mesh.num_triangles())
-        .map(|i| mesh.triangle(i).map(|p| [p.x, p.y, p.z]))
+        .map(|i| mesh.corners(i as u32).map(|p| [p.x, p.y, p.z]))
         .collect();
-    let partial =
-        |b: &cga_collide::bvh::Aabb| tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max));
+    let partial = |b: &cga_collide::bounding::Aabb| {
+        tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max))
+    };
     let mut level = vec![0u32; tree.len()];
     for i in 0..tree.len() {
         for ch in tree.children(i) {
@@ -125,7 +126,9 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
             CellState::Partial
         } else {
             assert!(
-                c.contains_point(&n.centre.into(), Mode::Brute),
+                c.clone()
+                    .with_mode(Mode::Brute)
+                    .contains_point(&n.centre.into()),
                 "node {i} is empty"
             );
             CellState::Full
@@ -144,7 +147,7 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
                 if !kept.contains(&cc) {
                     let cb = cell_of(&cc, side, level[i] + 1);
                     assert!(!partial(&cb));
-                    assert!(!c.contains_point(&cc.into(), Mode::Brute));
+                    assert!(!c.clone().with_mode(Mode::Brute).contains_point(&cc.into()));
                 }
             }
         }
@@ -236,7 +239,7 @@ proptest! {
         let moved = f.tb.transformed(&iso);
         let trees = agree(&f.ta, &moved)?;
         agree(&moved, &f.ta)?;
-        let exact = f.a.collides_solid(&f.b.placed(&iso).unwrap(), Mode::Bvh);
+        let exact = f.a.collides_solid(&f.b.placed(&iso).unwrap());
         // No false negatives: the leaf balls cover the solids.
         prop_assert!(trees || !exact);
     }

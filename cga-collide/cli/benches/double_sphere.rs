@@ -1,6 +1,6 @@
 //! The double-sphere tree's `collide` at level 3 on the paper's four pairs, against the
 //! brute-force exact answer (every triangle pair plus containment) and the GJK reference of
-//! [`cga_collide::query::convex`], on the same random placements.
+//! [`cga_collide::collider::convex`], on the same random placements.
 //!
 //! `cargo bench -p cga-collide --bench double_sphere -- --warm-up-time 1 --measurement-time 3`
 //!
@@ -14,11 +14,11 @@
 use std::hint::black_box;
 
 use cga_cli::experiment::placement;
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{
     collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
 };
 use cga_collide::nalgebra::{Isometry3, Point3};
-use cga_collide::query::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::{Intersects, Triangle};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};

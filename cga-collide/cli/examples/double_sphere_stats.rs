@@ -5,16 +5,16 @@
 //!
 //! For each of the paper's four pairs and both inner-sphere kinds: how many placements collide,
 //! how each answer was decided, the mean numbers of sphere and triangle tests, and a check of
-//! every answer against the GJK reference of `cga_collide::query::convex`.
+//! every answer against the GJK reference of `cga_collide::collider::convex`.
 
 use std::collections::BTreeMap;
 
 use cga_cli::experiment::placement;
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{
     collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
 };
 use cga_collide::nalgebra::Point3;
-use cga_collide::query::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 fn main() {

@@ -1,7 +1,7 @@
 //! The three hierarchies on the double-sphere paper's workloads: the double outer/inner sphere
 //! tree (double-sphere paper), the octree sphere tree (Fuentes Socorro) and the general BVH of the mesh module,
 //! on the four polyhedra pairs at the two experiment-sphere sizes, with the same placements
-//! for all and every answer compared with the exact reference (`cga_collide::query::convex`).
+//! for all and every answer compared with the exact reference (`cga_collide::collider::convex`).
 //!
 //! Per method: build time, memory, mean time per query (everything a query needs from the two
 //! poses: the double-sphere tree transforms what it visits; the BVH places both meshes (vertex
@@ -17,12 +17,12 @@ use std::time::Instant;
 
 use cga_cli::experiment::{calibrate_radius, placement, PAPER_PAIRS};
 use cga_cli::plot::{svg_bar_charts, BarChart};
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{
     collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
 };
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{collide, SphereTree};
-use cga_collide::query::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 

@@ -1,6 +1,6 @@
 //! The experiment of the double-sphere paper (§5, Tables 2 and 3), run on the exact
 //! hierarchy of [`cga_collide::hierarchy::double_sphere`] and checked, placement by placement, against the
-//! independent exact reference [`cga_collide::query::convex::convex_solids_intersect`].
+//! independent exact reference [`cga_collide::collider::convex::convex_solids_intersect`].
 //!
 //! Two convex polyhedra (circumradius 1, see [`cga_collide::shape::polyhedron`]) are placed with their
 //! centres uniformly at random inside an *experiment sphere* and with uniformly random
@@ -38,8 +38,8 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
+use cga_collide::collider::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{collide_with, Decision, DoubleSphereTree, Scratch};
-use cga_collide::query::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 /// The four pairs of the paper's experiment, in the order of its tables.

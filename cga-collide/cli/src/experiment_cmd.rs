@@ -427,7 +427,7 @@ fn markdown(
 
     let _ = writeln!(
         s,
-        "\nExact reference (certified GJK, `cga_collide::query::convex`): how each answer was certified, and its mean time.\n"
+        "\nExact reference (certified GJK, `cga_collide::collider::convex`): how each answer was certified, and its mean time.\n"
     );
     let _ = writeln!(
         s,

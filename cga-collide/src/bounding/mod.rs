@@ -18,5 +18,5 @@ pub(crate) mod placed_leaves;
 pub(crate) mod pose_bounds;
 pub(crate) mod pose_tree;
 
-pub use bvh::{triangle_box, Aabb, BuildStrategy, Bvh, BvhNode, MAX_LEAF};
 pub(crate) use bvh::{box_distance2, boxes_within};
+pub use bvh::{triangle_box, Aabb, BuildStrategy, Bvh, BvhNode, MAX_LEAF};

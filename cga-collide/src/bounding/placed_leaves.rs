@@ -4,7 +4,7 @@
 //!
 //! A triangle is placed with **the expression `pose * v` of
 //! [`TriMesh::transformed`](crate::TriMesh::transformed)** (hence of
-//! [`Collider::placed`](crate::query::Collider::placed)), so its coordinates are bit-identical
+//! [`Collider::placed`](crate::collider::Collider::placed)), so its coordinates are bit-identical
 //! to the placed mesh's.
 
 use std::cell::RefCell;
@@ -13,12 +13,12 @@ use std::ops::Range;
 
 use nalgebra::Isometry3;
 
-use crate::bounding::Aabb;
 use crate::bounding::oriented_boxes::{Carried, OrientedBox, OrientedGaps};
 use crate::bounding::pose_tree::{PoseNode, PoseTree};
+use crate::bounding::Aabb;
 use crate::Triangle;
 
-/// A triangle placed exactly as [`Collider::placed`](crate::query::Collider::placed) places
+/// A triangle placed exactly as [`Collider::placed`](crate::collider::Collider::placed) places
 /// it, with its (exact) box and its index in the mesh.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Placed {
@@ -180,36 +180,4 @@ pub(crate) fn with_scratch<R>(
             f(&mut s)
         }
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::query::Collider;
-    use crate::TriMesh;
-
-    /// Leaves placed in an earlier traversal (or of another tree) are placed again, and the
-    /// triangles are those of the placed mesh.
-    #[test]
-    fn epochs_separate_traversals() {
-        let c = Collider::new(TriMesh::bunny().unit());
-        let tree = c.pose_tree();
-        let leaf = tree
-            .nodes()
-            .iter()
-            .position(|n| n.is_leaf())
-            .expect("a leaf");
-        let n = tree.nodes()[leaf];
-        for k in 0..3 {
-            let iso = Isometry3::translation(0.1 * k as f64, 0.0, 0.0);
-            let placed = c.placed(&iso).unwrap();
-            with_scratch(tree.nodes().len(), tree.nodes().len(), |s| {
-                let r = s.leaf(0, leaf as u32, &n, tree, &iso);
-                assert_eq!(s.leaf(0, leaf as u32, &n, tree, &iso), r);
-                for p in s.placed(r) {
-                    assert_eq!(p.tri, placed.triangle(p.index));
-                }
-            });
-        }
-    }
 }

@@ -1,4 +1,4 @@
-//! The hierarchy of a [`Collider`](crate::query::Collider) laid out for queries under poses:
+//! The hierarchy of a [`Collider`](crate::collider::Collider) laid out for queries under poses:
 //! each node as a centre and half-extent (what a box test under a rotation reads) with its
 //! size, one 64-byte cache line per node, and the triangles' vertices copied in leaf order, so
 //! that placing the triangles of a leaf reads one contiguous block instead of an index and
@@ -25,8 +25,8 @@ use std::sync::OnceLock;
 
 use nalgebra::Point3;
 
-use crate::bounding::{Aabb, Bvh};
 use crate::bounding::oriented_boxes::{centre_half, fit, OrientedBoxes};
+use crate::bounding::{Aabb, Bvh};
 
 /// A node of the hierarchy for queries under poses.
 #[derive(Debug, Clone, Copy, PartialEq)]

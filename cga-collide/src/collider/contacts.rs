@@ -57,13 +57,12 @@ use crate::query::contact::{clip, half, is_zero, lerp, one, q3, zero, Q3};
 use crate::query::containment::exact_point_in_solid;
 use crate::query::{triangle_intersection, ContactGeometry};
 
-
 impl Collider {
     /// Every intersecting triangle pair `(i, j)` of `self` and `other` (in one frame) with its
     /// exact intersection (a point, a segment or a coplanar polygon), sorted by pair.
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::ContactGeometry, Collider, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::ContactGeometry, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let touching = cube.placed(&Isometry3::translation(1.0, 0.0, 0.0))?;
     /// let contacts = cube.contacts(&touching);
@@ -105,7 +104,7 @@ impl Collider {
     /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn contact_class(&self, other: &Collider) -> Contact {
-        contact_class(self, other)
+        classify(self, other)
     }
 
     /// The contact class of `self` at `pose_a` and `other` at `pose_b`: the
@@ -400,7 +399,7 @@ fn some_edge_enters(a: &ContactSide, b: &Collider, pairs: &HashMap<u32, Vec<u32>
 }
 
 /// The contact class (see the module docs).
-fn contact_class(a: &Collider, b: &Collider) -> Contact {
+fn classify(a: &Collider, b: &Collider) -> Contact {
     let pairs = a.intersecting_pairs(b);
     let inside = |inner: &Collider, outer: &Collider| {
         inner
@@ -458,4 +457,3 @@ fn contact_class(a: &Collider, b: &Collider) -> Contact {
         Contact::Touching
     }
 }
-

@@ -27,7 +27,7 @@
 //! rare on random placements, and the experiment reports how often it ran.
 //!
 //! ```
-//! use cga_collide::query::convex::{convex_solids_intersect, ConvexMeshRef};
+//! use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 //! use nalgebra::Point3;
 //!
 //! // A unit cube and the same cube moved by (0.5, 0.5, 0.5): they overlap.
@@ -57,9 +57,9 @@ use std::cmp::Ordering;
 
 use nalgebra::Point3;
 
-use crate::exact::ExactPlane;
 use crate::collider::Collider;
 use crate::error::Error;
+use crate::exact::ExactPlane;
 use crate::shape::mesh::TriMesh;
 use crate::{Intersects, Triangle};
 
@@ -96,10 +96,7 @@ impl<'a> ConvexMeshRef<'a> {
 
     /// The same triangles over other vertices (e.g. the same solid in another pose): only the
     /// vertex count and finiteness are checked, the triangles were checked by `new`.
-    pub fn with_vertices<'b>(
-        &self,
-        vertices: &'b [Point3<f64>],
-    ) -> Result<ConvexMeshRef<'b>, Error>
+    pub fn with_vertices<'b>(&self, vertices: &'b [Point3<f64>]) -> Result<ConvexMeshRef<'b>, Error>
     where
         'a: 'b,
     {
@@ -376,10 +373,6 @@ const MAX_ITERATIONS: usize = 64;
 
 /// Unit roundoff of `f64`.
 const U: f64 = f64::EPSILON / 2.0;
-
-
-
-
 
 /// `(u × v) × u`: the component of `v` orthogonal to `u`, scaled.
 fn triple(u: &[f64; 3], v: &[f64; 3]) -> [f64; 3] {

@@ -83,12 +83,7 @@ impl Collider {
         .ok_or(Error::Empty {
             file: "Collider".to_owned(),
         })?;
-        let d = certified_mesh_distance(
-            (i, j),
-            &open,
-            |x| self.corners(x),
-            |y| other.corners(y),
-        );
+        let d = certified_mesh_distance((i, j), &open, |x| self.corners(x), |y| other.corners(y));
         finite(d, magnitude)
     }
 

@@ -59,11 +59,7 @@ impl Collider {
     pub fn segment_hits(&self, s: &Segment) -> Vec<u32> {
         let (p, q) = (*s.a(), *s.b());
         let query = Aabb::of_points(&[p, q]);
-        self.hits(
-            &query,
-            |b| b.may_meet_segment(&p, &q),
-            |t| t.intersects(s),
-        )
+        self.hits(&query, |b| b.may_meet_segment(&p, &q), |t| t.intersects(s))
     }
 
     /// Sorted indices of the triangles the closed triangle meets.

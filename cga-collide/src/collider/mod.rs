@@ -48,6 +48,8 @@
 //! ```
 
 mod batch;
+#[cfg(test)]
+mod bounding_tests;
 mod clearance;
 mod contacts;
 mod containment;
@@ -56,7 +58,7 @@ mod distance;
 mod hits;
 mod nearest;
 mod pairs;
-mod poses;
+pub(crate) mod poses;
 mod self_intersection;
 
 pub use batch::PosePair;
@@ -185,7 +187,6 @@ pub(super) fn widen(b: &[f32; 6]) -> Aabb {
         max: [f64::from(b[3]), f64::from(b[4]), f64::from(b[5])],
     }
 }
-
 
 impl Collider {
     /// Builds the hierarchy (binned SAH) over a mesh, taken as already in world coordinates.

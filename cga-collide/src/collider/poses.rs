@@ -78,7 +78,7 @@
 //! [`Error`] instead of an answer.
 //!
 //! ```
-//! use cga_collide::query::{Collider, Mode};
+//! use cga_collide::collider::{Collider, Mode};
 //! use cga_collide::{nalgebra::{Isometry3, Vector3}, TriMesh};
 //! let a = Collider::new(TriMesh::bunny().unit());
 //! let b = Collider::new(TriMesh::bunny().unit());
@@ -87,7 +87,7 @@
 //! let pairs = a.intersecting_pairs_at(&pa, &b, &pb)?;
 //! // Identical to placing both meshes first:
 //! let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
-//! assert_eq!(pairs, wa.intersecting_pairs(&wb, Mode::Bvh));
+//! assert_eq!(pairs, wa.intersecting_pairs(&wb));
 //! assert_eq!(a.collides_at(&pa, &b, &pb)?, !pairs.is_empty());
 //! # Ok::<(), cga_collide::query::Error>(())
 //! ```
@@ -427,11 +427,7 @@ impl Collider {
 
     /// Whether the world point `p` lies in the closed solid bounded by this mesh placed at
     /// `pose`. Equal to [`contains_point`](Self::contains_point) on the placed copy.
-    pub fn contains_point_at(
-        &self,
-        pose: &Isometry3<f64>,
-        p: &Point3<f64>,
-    ) -> Result<bool, Error> {
+    pub fn contains_point_at(&self, pose: &Isometry3<f64>, p: &Point3<f64>) -> Result<bool, Error> {
         let world = self.world_boxes(pose)?;
         if self.mode() == Mode::Brute {
             return Ok(self.placed(pose)?.contains_point(p));
@@ -460,11 +456,7 @@ impl Collider {
     }
 
     /// Sorted indices of the triangles of this mesh at `pose` that the world segment meets.
-    pub fn segment_hits_at(
-        &self,
-        pose: &Isometry3<f64>,
-        s: &Segment,
-    ) -> Result<Vec<u32>, Error> {
+    pub fn segment_hits_at(&self, pose: &Isometry3<f64>, s: &Segment) -> Result<Vec<u32>, Error> {
         let (p, q) = (*s.a(), *s.b());
         self.hits_at(
             pose,
@@ -475,11 +467,7 @@ impl Collider {
     }
 
     /// Sorted indices of the triangles of this mesh at `pose` that the world triangle meets.
-    pub fn triangle_hits_at(
-        &self,
-        pose: &Isometry3<f64>,
-        t: &Triangle,
-    ) -> Result<Vec<u32>, Error> {
+    pub fn triangle_hits_at(&self, pose: &Isometry3<f64>, t: &Triangle) -> Result<Vec<u32>, Error> {
         let tb = Aabb::of_points(t.vertices());
         self.hits_at(
             pose,

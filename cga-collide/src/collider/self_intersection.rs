@@ -20,11 +20,11 @@
 use core::cmp::Ordering::{Equal, Greater};
 use std::ops::ControlFlow;
 
+use crate::collider::{Collider, Mode};
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::parallel::*;
 use crate::query::intersects::extremes;
-use crate::collider::{Collider, Mode};
 use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 

@@ -32,11 +32,7 @@ pub struct Circle {
 impl Circle {
     /// The circle through three points. Fails on non-finite coordinates and (exactly) when
     /// the points are collinear or two coincide.
-    pub fn from_points(
-        a: Point3<f64>,
-        b: Point3<f64>,
-        c: Point3<f64>,
-    ) -> Result<Self, Error> {
+    pub fn from_points(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Circle::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;

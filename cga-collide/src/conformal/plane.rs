@@ -39,11 +39,7 @@ pub struct Plane {
 impl Plane {
     /// The plane through `a, b, c`: `F(a) ∧ F(b) ∧ F(c) ∧ n_inf`. Fails on non-finite
     /// coordinates and (exactly) when the points are collinear or coincide.
-    pub fn from_points(
-        a: Point3<f64>,
-        b: Point3<f64>,
-        c: Point3<f64>,
-    ) -> Result<Self, Error> {
+    pub fn from_points(a: Point3<f64>, b: Point3<f64>, c: Point3<f64>) -> Result<Self, Error> {
         const C: &str = "conformal::Plane::from_points";
         finite3(C, ["a.x", "a.y", "a.z"], &a.coords)?;
         finite3(C, ["b.x", "b.y", "b.z"], &b.coords)?;
@@ -88,9 +84,7 @@ impl Plane {
     /// The plane of an OPNS quadvector (`from_ipns(dual(Π))`).
     pub fn from_blade(q: Quadvector<f64>) -> Result<Self, Error> {
         Plane::from_ipns(q.dual()).map_err(|e| match e {
-            Error::Degenerate { reason, .. } => {
-                degenerate("conformal::Plane::from_blade", reason)
-            }
+            Error::Degenerate { reason, .. } => degenerate("conformal::Plane::from_blade", reason),
             other => other,
         })
     }

@@ -127,9 +127,7 @@ impl Sphere {
     /// The sphere of an OPNS quadvector (`from_ipns(dual(S))`).
     pub fn from_blade(q: Quadvector<f64>) -> Result<Self, Error> {
         Sphere::from_ipns(q.dual()).map_err(|e| match e {
-            Error::Degenerate { reason, .. } => {
-                degenerate("conformal::Sphere::from_blade", reason)
-            }
+            Error::Degenerate { reason, .. } => degenerate("conformal::Sphere::from_blade", reason),
             other => other,
         })
     }

@@ -93,8 +93,6 @@ impl Kernel for FloatKernel {
     }
 }
 
-
-
 #[inline(always)]
 fn sign_of(x: f64) -> Ordering {
     x.partial_cmp(&0.0).unwrap_or(Ordering::Equal)

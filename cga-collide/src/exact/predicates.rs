@@ -26,9 +26,6 @@ fn v3<R: Ring>(x: &[R], i: usize) -> V3<R> {
     [x[i].clone(), x[i + 1].clone(), x[i + 2].clone()]
 }
 
-
-
-
 /// `2·up(x) = 2x + (|x|² - 1) e4 + (|x|² + 1) e5` as a generated [`cga::Vector`].
 #[inline(always)]
 fn up2<R: Ring>(x: &V3<R>) -> Vector<R> {

@@ -470,7 +470,7 @@ impl Device {
     }
 
     /// The pairs among `candidates` (triangle `i` of `a`, `j` of `b`; e.g. the box-overlap
-    /// pairs of the hierarchies, [`Collider::box_pairs_bvh`](crate::query::Collider::box_pairs_bvh))
+    /// pairs of the hierarchies, [`Collider::box_pairs_bvh`](crate::collider::Collider::box_pairs_bvh))
     /// that intersect, sorted.
     pub fn intersecting_candidates(
         &self,

@@ -9,11 +9,6 @@ use crate::exact::vector::{add_scaled, cross, dist2, dot, sub};
 
 pub(crate) type V<F> = [F; 3];
 
-
-
-
-
-
 /// A candidate nearest pair: squared distance and the two points.
 pub(crate) type Near<F> = (F, V<F>, V<F>);
 
@@ -87,7 +82,12 @@ pub(crate) fn segment_segment<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -
 
 /// The points where the common perpendicular of lines `ab` and `cd` meets them, if it meets
 /// both segments (the interior candidate of the nearest points of two segments).
-pub(crate) fn common_perpendicular<F: Real>(a: &V<F>, b: &V<F>, c: &V<F>, d: &V<F>) -> Option<Near<F>> {
+pub(crate) fn common_perpendicular<F: Real>(
+    a: &V<F>,
+    b: &V<F>,
+    c: &V<F>,
+    d: &V<F>,
+) -> Option<Near<F>> {
     let (u, v, w) = (sub(b, a), sub(d, c), sub(c, a));
     let n = cross(&u, &v);
     let nn = dot(&n, &n);
@@ -166,4 +166,3 @@ pub(crate) fn triangle_triangle<F: Real>(p: &[V<F>; 3], q: &[V<F>; 3]) -> Near<F
     }
     best.unwrap_or_else(|| unreachable!("candidates"))
 }
-

@@ -12,7 +12,6 @@ use crate::exact::vector::{cross, dot, sub};
 use crate::query::Intersects;
 use crate::shape::Triangle;
 
-
 /// An exact point.
 pub type ExactPoint = [Rational; 3];
 

@@ -36,14 +36,13 @@
 //! # Ok::<(), cga_collide::Error>(())
 //! ```
 
-
 use ga_core::scalar::{rational_from_f64, Rational, Real, Ring};
 use nalgebra::Point3;
 
+use crate::exact::vector::{add_scaled, cross, dist2, dot, sub};
 use crate::query::closest_points::{
     point_segment, point_triangle, segment_segment, segment_triangle, triangle_triangle, Near, V,
 };
-use crate::exact::vector::{add_scaled, cross, dist2, dot, sub};
 use crate::query::within_distance::WithinDistance;
 use crate::query::Intersects;
 use crate::shape::{Ball, Segment, Sphere, Triangle};
@@ -460,4 +459,3 @@ pub fn distance_triangle_sphere(a: &Triangle, b: &Sphere) -> CertifiedDistance {
         |r| a.within_distance(b, r),
     )
 }
-

@@ -91,7 +91,7 @@ fn separation_bound((g, nn): (f64, f64)) -> f64 {
 /// [`separation`]).
 #[cfg(test)]
 fn normal(t: &[V<f64>; 3]) -> V<f64> {
-    cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]))
+    crate::exact::vector::cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]))
 }
 
 /// Three times the centroid of a triangle, in `f64` (a direction for [`separation`]).
@@ -185,6 +185,15 @@ pub(crate) fn certified_mesh_distance(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ga_core::scalar::{rational_from_f64, Rational, Real};
+
+    fn q(x: f64) -> Rational {
+        rational_from_f64(x).expect("finite")
+    }
+
+    fn qv(p: &V<f64>) -> V<Rational> {
+        p.map(q)
+    }
     use proptest::prelude::*;
 
     fn coord() -> impl Strategy<Value = f64> {
@@ -262,4 +271,3 @@ mod tests {
         assert_eq!(separation(&[0.0, 0.0, 1e300], &p, &q), None);
     }
 }
-

@@ -14,11 +14,7 @@ use nalgebra::Point3;
 
 use crate::error::Error;
 
-fn check_point(
-    shape: &'static str,
-    argument: &'static str,
-    p: &Point3<f64>,
-) -> Result<(), Error> {
+fn check_point(shape: &'static str, argument: &'static str, p: &Point3<f64>) -> Result<(), Error> {
     for (axis, value) in ["x", "y", "z"].into_iter().zip(p.coords.iter()) {
         if !value.is_finite() {
             return Err(Error::NonFiniteCoordinate {

@@ -49,7 +49,7 @@ fn at(p: &Point3<f64>, i: usize) -> f64 {
 /// Möller's 1997 triangle–triangle test (with its epsilon and coplanar branch).
 ///
 /// ```
-/// use cga_collide::{nalgebra::Point3, Triangle, query::baseline::moller_tri_tri};
+/// use cga_collide::{nalgebra::Point3, Triangle, testing::baseline::moller_tri_tri};
 /// let t = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
 ///     Triangle::new(a.into(), b.into(), c.into()).unwrap()
 /// };
@@ -233,7 +233,7 @@ fn point_in_tri(v0: [f64; 2], u0: [f64; 2], u1: [f64; 2], u2: [f64; 2]) -> bool 
 /// triangle's plane, and every segment at small scale) are reported as not intersecting.
 ///
 /// ```
-/// use cga_collide::{nalgebra::Point3, Segment, Triangle, query::baseline::moller_trumbore_segment_triangle};
+/// use cga_collide::{nalgebra::Point3, Segment, Triangle, testing::baseline::moller_trumbore_segment_triangle};
 /// let t = Triangle::new(Point3::origin(), Point3::new(2., 0., 0.), Point3::new(0., 2., 0.)).unwrap();
 /// let s = Segment::new(Point3::new(0.5, 0.5, -1.), Point3::new(0.5, 0.5, 1.)).unwrap();
 /// assert!(moller_trumbore_segment_triangle(&s, &t));

@@ -102,8 +102,6 @@ pub fn hulls_intersect(a: &[Point3<f64>], b: &[Point3<f64>]) -> bool {
     false
 }
 
-
-
 /// Squared distances from `c` to the convex hull of `pts`: (minimum, maximum), exactly.
 pub fn hull_distance2(pts: &[Point3<f64>], c: &Point3<f64>) -> (Rational, Rational) {
     let v: Vec<[Rational; 3]> = pts.iter().map(qp).collect();

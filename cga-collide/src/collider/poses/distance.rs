@@ -12,8 +12,8 @@ use crate::bounding::oriented_boxes::OrientedGaps;
 use crate::bounding::placed_leaves::{with_scratch, Placed, Scratch};
 use crate::bounding::pose_tree::PoseNode;
 use crate::bounding::{box_distance2, boxes_within};
-use crate::collider::nearest::{beyond, child_pairs, enqueue, improves, queued, unqueued};
 use crate::collider::distance::{check_distance_range, finite};
+use crate::collider::nearest::{beyond, child_pairs, enqueue, improves, queued, unqueued};
 use crate::collider::Collider;
 use crate::error::Error;
 use crate::query::separation::{certified_mesh_distance, examine_pair, Open};
@@ -137,7 +137,7 @@ impl Collider {
     /// Every pair `(i, j)` (triangle `i` of `self` at `pose_a`, `j` of `other` at `pose_b`)
     /// within distance `c` of each other, exactly (closed: distance exactly `c` counts), sorted;
     /// the traversal is split over the cores (rayon, feature `parallel`). Equal to
-    /// `query::mesh_pairs_within_distance(&self.placed(pose_a)?, &other.placed(pose_b)?, c)`,
+    /// `self.placed(pose_a)?.pairs_within_distance(&other.placed(pose_b)?, c)`,
     /// `c` outside `[0, ∞)` included (NaN and negative: no pair; `+∞`: every pair).
     ///
     /// ```
@@ -149,7 +149,7 @@ impl Collider {
     /// let pairs = cube.pairs_within_distance_at(&id, &cube, &moved, 0.5)?;
     /// assert!(!pairs.is_empty());
     /// let placed = cube.placed(&moved).unwrap();
-    /// assert_eq!(pairs, query::mesh_pairs_within_distance(&cube, &placed, 0.5));
+    /// assert_eq!(pairs, cube.pairs_within_distance(&placed, 0.5));
     /// assert!(cube.within_distance_at(&id, &cube, &moved, 0.5)?);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
@@ -176,7 +176,7 @@ impl Collider {
 
     /// Whether some triangle of `self` at `pose_a` is within distance `c` of some triangle of
     /// `other` at `pose_b`, exactly (stops at the first pair; single-threaded). Equal to
-    /// `query::meshes_within_distance(&self.placed(pose_a)?, &other.placed(pose_b)?, c)`.
+    /// `self.placed(pose_a)?.within_distance(&other.placed(pose_b)?, c)`.
     pub fn within_distance_at(
         &self,
         pose_a: &Isometry3<f64>,
@@ -205,7 +205,7 @@ impl Collider {
     /// The minimum distance between the surfaces of `self` at `pose_a` and `other` at
     /// `pose_b`, with witnesses (world coordinates), the triangle pair and a certified error
     /// bound; `None` if a mesh has no triangles. Equal to
-    /// `query::mesh_distance(&self.placed(pose_a)?, &other.placed(pose_b)?)`: the same
+    /// `self.placed(pose_a)?.distance(&other.placed(pose_b)?)`: the same
     /// certified guarantee always, and the same value in every field (distance, witnesses,
     /// pair, bound) unless rounding makes a pair's `f64` distance fall below its true distance
     /// by more than the searches' proofs allow for (see [`crate::query::posed`], section
@@ -218,7 +218,7 @@ impl Collider {
     /// let d = cube.distance_at(&id, &cube, &moved)?.unwrap();
     /// assert!((d.distance - 0.5).abs() <= d.error_bound && d.error_bound < 1e-12);
     /// let placed = cube.placed(&moved).unwrap();
-    /// assert_eq!(Some(d), query::mesh_distance(&cube, &placed));
+    /// assert_eq!(d, cube.distance(&placed)?);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn distance_at(
@@ -245,7 +245,7 @@ impl Collider {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::query::{exact_distance_triangle_triangle, mesh_distance, meshes_within_distance};
+    use crate::query::exact_distance_triangle_triangle;
     use crate::TriMesh;
     use ga_core::scalar::{rational_from_f64, Rational};
     use nalgebra::{Point3, Vector3};
@@ -253,19 +253,19 @@ mod tests {
 
     /// The least `f64` `c` with the placed meshes within `c` (the exact distance rounded up).
     fn threshold(a: &Collider, b: &Collider) -> f64 {
-        let d = mesh_distance(a, b).unwrap();
+        let d = a.distance(b).unwrap();
         let (mut lo, mut hi) = (
             (d.distance - d.error_bound).max(0.0),
             d.distance + d.error_bound,
         );
-        assert!(meshes_within_distance(a, b, hi));
-        if meshes_within_distance(a, b, lo) {
+        assert!(a.within_distance(b, hi));
+        if a.within_distance(b, lo) {
             return lo;
         }
         // Bisection on the bit patterns (ordered like the values for non-negative floats).
         while hi.to_bits() - lo.to_bits() > 1 {
             let mid = f64::from_bits(lo.to_bits() + (hi.to_bits() - lo.to_bits()) / 2);
-            if meshes_within_distance(a, b, mid) {
+            if a.within_distance(b, mid) {
                 hi = mid;
             } else {
                 lo = mid;

@@ -2,6 +2,7 @@
 //! tests share.
 
 use super::*;
+use crate::bounding::pose_bounds::U;
 use nalgebra::{UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
@@ -91,7 +92,10 @@ fn box_test_keeps_meeting_pairs(
     pb: &Isometry3<f64>,
 ) -> Result<usize, TestCaseError> {
     let (wa, wb) = (a.placed(pa).unwrap(), b.placed(pb).unwrap());
-    let want = wa.intersecting_pairs(&wb, crate::query::Mode::Brute);
+    let want = wa
+        .clone()
+        .with_mode(crate::collider::Mode::Brute)
+        .intersecting_pairs(&wb);
     let pair = PosedPair::new(a, pa, b, pb).unwrap();
     let (na, nb) = (a.pose_tree().nodes(), b.pose_tree().nodes());
     for &(i, j) in &want {

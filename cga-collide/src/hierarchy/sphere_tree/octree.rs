@@ -32,7 +32,7 @@
 //!
 //! ```
 //! use cga_collide::shape::mesh::TriMesh;
-//! use cga_collide::query::Collider;
+//! use cga_collide::collider::Collider;
 //! use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 //! let bunny = Collider::new(TriMesh::bunny().unit());
 //! let (tree, report) = build(&bunny, &BuildOptions::depth(3))?;

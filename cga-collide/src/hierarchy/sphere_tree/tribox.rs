@@ -119,8 +119,7 @@ mod tests {
             .map(|m| Segment::new(p(&t[m]), p(&t[(m + 1) % 3])).expect("finite vertices"))
             .collect();
         (0..surface.num_triangles()).any(|i| {
-            let [a, b, c] = surface.triangle(i);
-            let face = Triangle::new(a, b, c).expect("finite vertices");
+            let face = surface.triangle(i as u32);
             tri.intersects(&face) || edges.iter().any(|e| face.intersects(e))
         })
     }

@@ -167,8 +167,8 @@ impl TriMesh {
             flate2::read::MultiGzDecoder::new(bytes)
                 .read_to_end(&mut plain)
                 .map_err(|error| Error::Io {
-            kind: error.kind(),
-            message: error.to_string(),
+                    kind: error.kind(),
+                    message: error.to_string(),
                     file: name.to_owned(),
                 })?;
             return Self::from_bytes(&plain, format, name);
@@ -297,11 +297,12 @@ impl TriMesh {
             .iter()
             .map(|v| Point3::from((v - centre) * scale))
             .collect();
-        let vertices = if side.is_normal() && vertices.iter().all(|v| v.iter().all(|x| x.is_finite())) {
-            vertices
-        } else {
-            self.unit_by_powers_of_two()
-        };
+        let vertices =
+            if side.is_normal() && vertices.iter().all(|v| v.iter().all(|x| x.is_finite())) {
+                vertices
+            } else {
+                self.unit_by_powers_of_two()
+            };
         TriMesh {
             vertices,
             triangles: self.triangles.clone(),

@@ -10,8 +10,8 @@ use std::io::{BufRead, Read};
 
 use nalgebra::Point3;
 
-use crate::error::{Location, Error};
 use super::text::check_finite;
+use crate::error::{Error, Location};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 

@@ -9,8 +9,8 @@
 
 use nalgebra::Point3;
 
-use crate::error::{Location, Error};
 use super::text::{capacity, check_finite, content_lines, fan, parse_f64, parse_u64};
+use crate::error::{Error, Location};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 

@@ -8,8 +8,8 @@
 
 use nalgebra::Point3;
 
-use crate::error::{shorten, Location, Error};
 use super::text::{capacity, check_finite, fan};
+use crate::error::{shorten, Error, Location};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 

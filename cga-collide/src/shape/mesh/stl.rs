@@ -9,8 +9,8 @@ use std::collections::HashMap;
 
 use nalgebra::Point3;
 
-use crate::error::{Location, Error};
 use super::text::{capacity, check_finite, parse_f64};
+use crate::error::{Error, Location};
 
 type Parsed = (Vec<Point3<f64>>, Vec<[u32; 3]>);
 

@@ -1,6 +1,6 @@
 //! Small helpers shared by the text parsers.
 
-use crate::error::{shorten, Location, Error};
+use crate::error::{shorten, Error, Location};
 
 /// Parses a finite-or-not `f64` token (finiteness is checked by the caller, which knows the
 /// vertex index).
