@@ -13,6 +13,8 @@ use crate::reading::Ctx;
 use crate::scope::Scope;
 use crate::verdict::{judge, rat_str, short, Verdict};
 
+/// The primitive computed from points, its aux form, and the point letters of each `defs`
+/// entry.
 fn defs_target(kind: &str) -> Option<(SymMultivector, String)> {
     let pts = |ls: &[&str]| ls.iter().map(|l| point_of(l)).collect::<Vec<_>>();
     Some(match kind {

@@ -164,8 +164,6 @@ pub(crate) fn grades(m: &SymMultivector) -> String {
         .join(", ")
 }
 
-/// The primitive computed from points, its aux form, and the point letters of each `defs`
-
 pub(crate) fn check_square(
     formula: &str,
     scope: &Scope,
