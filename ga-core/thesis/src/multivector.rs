@@ -3,13 +3,13 @@
 //! The thesis's formulas are sums of a few blades with long polynomial coefficients, and the
 //! checker reads, compares and prints them blade by blade; a sparse map from blade bitmask
 //! (`e1` = bit 0 … `e5` = bit 4) to coefficient fits that better than the generated dense
-//! `cga::Multivector` (which [`From`] converts from). Its own products take their signs from
+//! `cga::Multivector`. Its own products take their signs from
 //! `ga_core::reference` (the project's one definition of blade products), so reading a printed
 //! formula never depends on the generated code that the checks test.
 
 use std::collections::BTreeMap;
 
-use ga_core::reference::{blade_product, grade_of, reverse_sign};
+use ga_core::reference::blade_product;
 use ga_core::scalar::{Rational, Ring};
 use ga_core::symbolic::Poly;
 
@@ -153,19 +153,6 @@ impl SymMultivector {
         }
         r
     }
-    /// Reverse (`Ã`).
-    pub fn reverse(&self) -> Self {
-        let mut r = Self::zero();
-        for (&m, p) in &self.coeffs {
-            let p = if reverse_sign(grade_of(usize::from(m))) < 0 {
-                -p
-            } else {
-                p.clone()
-            };
-            r.coeffs.insert(m, p);
-        }
-        r
-    }
     /// Simultaneous substitution in every coefficient.
     pub fn subs_all(&self, values: &[(&str, Poly)]) -> Self {
         self.map(|p| p.subs_all(values))
@@ -188,19 +175,5 @@ impl SymMultivector {
             }
         }
         k
-    }
-}
-
-impl SymMultivector {
-    /// The thesis's dual `A* = I A` with `I = e1e2e3eē` (the negative of our `dual`).
-    pub fn thesis_dual(&self) -> Self {
-        SymMultivector::blade(31, <Poly as Ring>::one()).gp(self)
-    }
-}
-
-impl From<&ga_core::cga::Multivector<Poly>> for SymMultivector {
-    /// The same multivector, for printing in the thesis's notation or comparing.
-    fn from(m: &ga_core::cga::Multivector<Poly>) -> Self {
-        SymMultivector::from_coefficients(&m.coefficients())
     }
 }

@@ -216,10 +216,6 @@ impl Scope {
         self.defs.push((name.to_string(), expr.to_string()));
         self
     }
-    /// The auxiliary symbols, in declaration order.
-    pub fn definitions(&self) -> &[(String, String)] {
-        &self.defs
-    }
     fn resolve(&self, name: &str) -> Result<SymMultivector, String> {
         if let Some(p) = self.points.get(name) {
             return Ok(p.clone());
