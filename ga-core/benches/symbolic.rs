@@ -1,13 +1,14 @@
-//! Symbolic expansion speed: the thesis's sphere S = P1∧P2∧P3∧P4 over `Poly` with the generated
-//! typed products, the generated dense multivector, and (baseline) the independent bitmask
-//! products of `SymMultivector`; and one large polynomial product.
+//! Symbolic expansion speed: the sphere S = P1∧P2∧P3∧P4 through four points `2·up(x)` over
+//! `Poly` with the generated typed products, the generated dense multivector, and (baseline) the
+//! independent bitmask products of the dense reference (`reference::DenseMultivector`); and one
+//! large polynomial product.
 //!
 //! `cargo bench -p ga-core --bench symbolic -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ga_core::cga::{Multivector, Vector};
 use ga_core::prelude::*;
-use ga_core::symbolic::thesis::SymMultivector;
+use ga_core::reference::{DenseMultivector, Signature};
 use ga_core::symbolic::Poly;
 use std::hint::black_box;
 
@@ -15,9 +16,12 @@ fn coords(l: &str) -> [Poly; 3] {
     [1, 2, 3].map(|i| Poly::var(&format!("{l}{i}")))
 }
 
+/// `2·up(x) = 2x + x² n_inf − 2 n_0`, with `n_inf = e4 + e5` and `2 n_0 = e5 − e4`.
 fn point(l: &str) -> Vector<Poly> {
-    let p = SymMultivector::thesis_point(coords(l));
-    Vector::new(p.get(1), p.get(2), p.get(4), p.get(8), p.get(16))
+    let [a, b, c] = coords(l);
+    let sq = &(&(&a * &a) + &(&b * &b)) + &(&c * &c);
+    let (one, two) = (Poly::from(1), Poly::from(2));
+    Vector::new(&two * &a, &two * &b, &two * &c, &sq - &one, &sq + &one)
 }
 
 fn bench(c: &mut Criterion) {
@@ -33,10 +37,27 @@ fn bench(c: &mut Criterion) {
     g.bench_function("generated dense Multivector", |bn| {
         bn.iter(|| black_box(dense[0].wedge(&dense[1]).wedge(&dense[2]).wedge(&dense[3])))
     });
-    let sym: Vec<SymMultivector> = dense.iter().map(SymMultivector::from).collect();
-    g.bench_function("baseline: SymMultivector bitmask products", |bn| {
-        bn.iter(|| black_box(sym[0].wedge(&sym[1]).wedge(&sym[2]).wedge(&sym[3])))
-    });
+    let cl41 = Signature::new(&[1, 1, 1, 1, -1]).expect("Cl(4,1)");
+    let reference: Vec<DenseMultivector<Poly>> = dense
+        .iter()
+        .map(|m| {
+            DenseMultivector::from_canonical(&cl41, m.coefficients().to_vec())
+                .expect("32 coefficients")
+        })
+        .collect();
+    g.bench_function(
+        "baseline: reference DenseMultivector bitmask products",
+        |bn| {
+            bn.iter(|| {
+                black_box(
+                    reference[0]
+                        .wedge(&reference[1])
+                        .wedge(&reference[2])
+                        .wedge(&reference[3]),
+                )
+            })
+        },
+    );
     g.finish();
 
     let s = a.wedge(&b).wedge(&cc).wedge(&d);

@@ -42,7 +42,7 @@
 //! | [`prelude`] | the product and scalar traits, to `use` in one line |
 //! | [`ops`] | the product traits: geometric, wedge, contractions, scalar, regressive, sandwich |
 //! | [`scalar`] | the scalar traits ([`Ring`](scalar::Ring), [`Field`](scalar::Field), [`Real`](scalar::Real), [`Elementary`](scalar::Elementary)), [`Rational`](scalar::Rational), SIMD lanes ([`scalar::lanes`]) |
-//! | [`symbolic`] | multivariate polynomials with rational coefficients ([`Poly`](symbolic::Poly)), parsing, LaTeX, the thesis's notation |
+//! | [`symbolic`] | multivariate polynomials with rational coefficients ([`Poly`](symbolic::Poly)), parsing (also over your own value types), LaTeX |
 //! | [`exp_log`] | exponentials, logarithms and square roots of versors, in closed form |
 //! | [`inverse`] | the checked inverse behind every generated type's `inverse()` |
 //! | [`linalg`] | the small exact-friendly linear solver used by [`inverse`] |

@@ -3,7 +3,6 @@
 
 use ga_core::interop::InteropError;
 use ga_core::reference::{DenseMultivector, Signature, MAX_GENERATORS};
-use ga_core::symbolic::thesis::Fixture;
 use ga_core::symbolic::Poly;
 
 /// Panics unless `message` contains every one of `parts`.
@@ -52,14 +51,6 @@ fn symbolic_errors_name_the_variable_or_the_byte() {
             .eval_f64(&[("x", 1e300)])
             .unwrap_err(),
         &["non-finite", "eval_rational"],
-    );
-}
-
-#[test]
-fn fixture_errors_name_the_line() {
-    says(
-        Fixture::parse("  continued\n").unwrap_err(),
-        &["line 1", "continuation line outside an entry"],
     );
 }
 

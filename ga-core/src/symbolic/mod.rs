@@ -20,20 +20,24 @@
 //!
 //! The same works for multivectors of the generated algebras, whose coefficients may be any
 //! [`Ring`](crate::scalar::Ring): build them from `Poly` coefficients and use the products as usual. Expanding
-//! `a ∧ b` for two symbolic conformal vectors, printed plainly, in LaTeX, and in the thesis's
-//! notation ([`thesis`]):
+//! `a ∧ b` for two symbolic conformal vectors, printed plainly and in LaTeX:
 //!
 //! ```
-//! use ga_core::{cga::{Multivector, Vector}, prelude::*, symbolic::{thesis, Poly}};
+//! use ga_core::{cga::Vector, prelude::*, symbolic::Poly};
 //! let v = |s: &str| Vector::new(Poly::var(&format!("{s}1")), Poly::var(&format!("{s}2")), Poly::var(&format!("{s}3")), Poly::var(&format!("{s}4")), Poly::var(&format!("{s}5")));
 //! let ab = v("a").wedge(&v("b"));                       // a Bivector<Poly>, fully expanded
 //! println!("{ab}\n{}", ab.e12.to_latex());             // (a1*b2 - a2*b1)e12 + ...
-//! println!("{}", thesis::SymMultivector::from(&Multivector::from(ab.clone())).to_notation(thesis::Notation::Thesis));
 //! assert_eq!(ab.e12, Poly::parse("a1*b2 - a2*b1").unwrap());
 //! ```
+//!
+//! # Parsing expressions over your own values
+//!
+//! [`Poly::parse`]'s grammar (sums, products by juxtaposition, `/` by constants, `^`, `∧`, `⌋`)
+//! is available for any value type implementing [`parse::ExprValue`], with identifiers resolved by
+//! the caller: [`parse::parse_with`]. A multivector type can read formulas written in its own basis names
+//! this way without a parser of its own.
 
-mod parse;
-pub mod thesis;
+pub mod parse;
 
 use core::cmp::Ordering;
 use core::fmt;

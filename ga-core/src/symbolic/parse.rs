@@ -1,5 +1,6 @@
-//! A small expression parser shared by [`Poly::parse`](super::Poly::parse) and the
-//! multivector expressions of the thesis fixture.
+//! A small expression parser shared by [`Poly::parse`](super::Poly::parse) and by callers that
+//! compute with values of their own (multivectors, say): one grammar, any value type that
+//! implements [`ExprValue`], identifiers resolved by the caller ([`parse_with`]).
 //!
 //! Grammar (juxtaposition multiplies, `∧` binds tighter than products, `^` tighter still):
 //! ```text
@@ -16,19 +17,30 @@ use num_traits::{One, Zero};
 use super::{Poly, SymbolicError};
 use crate::scalar::Rational;
 
-/// What the parser computes with.
-pub(crate) trait Value: Sized + Clone {
+/// What [`parse_with`] computes with: the operations of the grammar on the caller's values.
+///
+/// `Err` messages of the fallible operations become the message of a
+/// [`SymbolicError::Parse`] at the operator's position.
+pub trait ExprValue: Sized + Clone {
+    /// The value of a number literal.
     fn constant(c: Rational) -> Self;
+    /// `self + o`.
     fn add(&self, o: &Self) -> Self;
+    /// `self - o`.
     fn sub(&self, o: &Self) -> Self;
+    /// `self * o`, also written as juxtaposition (for multivectors: the geometric product).
     fn mul(&self, o: &Self) -> Self;
+    /// `-self`.
     fn neg(&self) -> Self;
+    /// Outer product `self ∧ o` (only multivector values have one).
     fn wedge(&self, o: &Self) -> Result<Self, String>;
     /// Left contraction `self ⌋ o` (only multivector values have one).
     fn left_contraction(&self, _o: &Self) -> Result<Self, String> {
         Err("`⌋` is not defined for scalar polynomials".into())
     }
+    /// The value as a rational constant, if it is one (divisors must be constants).
     fn as_constant(&self) -> Option<Rational>;
+    /// `self^k` (by repeated multiplication unless overridden).
     fn pow(&self, k: u32) -> Self {
         let mut r = Self::constant(<Rational as One>::one());
         for _ in 0..k {
@@ -38,7 +50,7 @@ pub(crate) trait Value: Sized + Clone {
     }
 }
 
-impl Value for Poly {
+impl ExprValue for Poly {
     fn constant(c: Rational) -> Self {
         Poly::constant(c)
     }
@@ -133,7 +145,7 @@ struct Parser<'a, V> {
 
 type PResult<V> = Result<V, (usize, String)>;
 
-impl<V: Value> Parser<'_, V> {
+impl<V: ExprValue> Parser<'_, V> {
     fn pos(&self) -> usize {
         self.toks.get(self.i).map(|t| t.0).unwrap_or(self.end)
     }
@@ -254,8 +266,17 @@ impl<V: Value> Parser<'_, V> {
     }
 }
 
-/// Parses `text` with identifiers resolved by `resolve`.
-pub(crate) fn parse_with<V: Value>(
+/// Parses `text` (the grammar above) into the caller's value type, with every identifier
+/// resolved by `resolve` (an `Err` there becomes a [`SymbolicError::Parse`] at the identifier).
+///
+/// ```
+/// use ga_core::symbolic::{parse::parse_with, Poly};
+/// // Identifiers are polynomials, except `k`, which stands for 2.
+/// let resolve = |name: &str| Ok(if name == "k" { Poly::from(2) } else { Poly::var(name) });
+/// let p = parse_with("k x^2 - (x - 1)", &resolve).unwrap();
+/// assert_eq!(p, Poly::parse("2 x^2 - x + 1").unwrap());
+/// ```
+pub fn parse_with<V: ExprValue>(
     text: &str,
     resolve: &dyn Fn(&str) -> Result<V, String>,
 ) -> Result<V, SymbolicError> {

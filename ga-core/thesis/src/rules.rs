@@ -3,11 +3,17 @@
 use std::fmt::Write as _;
 
 use ga_core::scalar::Rational;
-use ga_core::symbolic::thesis::{Entry, Fixture, Scope, SymMultivector};
 use ga_core::symbolic::Poly;
 use num_traits::{Signed, Zero};
 
-use super::{gp, lc, n_inf, point2, thesis_dual, wedge_all, Ctx, Verdict};
+use crate::fixture::Entry;
+use crate::multivector::SymMultivector;
+use crate::notation::thesis_name;
+use crate::objects::{n_inf, point2, thesis_dual, wedge_all};
+use crate::products::{gp, lc};
+use crate::reading::Ctx;
+use crate::scope::Scope;
+use crate::verdict::{rat_str, Verdict};
 
 type V3 = [Rational; 3];
 
@@ -173,7 +179,7 @@ fn sign_word(s: i32, what: &str) -> String {
 
 const CASES: usize = 12;
 
-pub fn check_rule(
+pub(crate) fn check_rule(
     ctx: &Ctx,
     e: &Entry,
     scope: &Scope,
@@ -181,7 +187,6 @@ pub fn check_rule(
     method: &mut String,
     detail: &mut String,
 ) -> Verdict {
-    let fx = ctx.fx;
     let formula_of = |id: &str| ctx.formula_of(id);
     let mut g = Lcg(0x5eed_0000 + kind.len() as u64);
     match kind {
@@ -256,7 +261,7 @@ pub fn check_rule(
                          vanishes exactly when the lines are coplanar: intersecting, **parallel** or coincident. \
                          Corrected rule: value = 0 and (x2 − x1) × (x4 − x3) ≠ 0 ⇔ the lines meet in one \
                          point (value = 0 with parallel directions: parallel or identical lines).",
-                        super::rat_str(&k)
+                        rat_str(&k)
                     );
                 }
                 None => {
@@ -428,7 +433,6 @@ pub fn check_rule(
             }
         }
         "rule_line_sphere" | "rule_sphere_plane" | "rule_sphere_sphere" => sphere_rule(
-            fx,
             kind,
             scope,
             &formula_of,
@@ -446,9 +450,7 @@ pub fn check_rule(
 }
 
 /// Classes by distance: `Two`, `Tangent`, `None`.
-#[allow(clippy::too_many_arguments)]
 fn sphere_rule(
-    _fx: &Fixture,
     kind: &str,
     scope: &Scope,
     formula_of: &dyn Fn(&str) -> String,
@@ -661,7 +663,7 @@ fn prove(scope: &Scope, formula: &str, target: &Poly, what: &str, detail: &mut S
             let _ = writeln!(
                 detail,
                 "\nProved symbolically: B² = {} · {what}.",
-                super::rat_str(&k)
+                rat_str(&k)
             );
         }
         None => {
@@ -766,14 +768,14 @@ fn prove_sphere_rule(kind: &str) -> String {
              radius, normal, offset; the outer forms are nonzero multiples of them, so only a positive \
              factor changes): ⟨B B⟩₀ = {} · [{what}], so its sign is the Euclidean discriminant's: \
              > 0 meet, = 0 tangent, < 0 apart.",
-            super::rat_str(&k)
+            rat_str(&k)
         ),
         None => format!("⟨B B⟩₀ from dual forms is not a constant multiple of {what}."),
     }
 }
 
 /// The line–line test from the full product `(I L1) L2` (all grades), derived and proved here.
-pub fn line_line_full(method: &mut String, detail: &mut String) -> Verdict {
+pub(crate) fn line_line_full(method: &mut String, detail: &mut String) -> Verdict {
     *method = "(I L1) L2 with the generated geometric product, L1 = P1∧P2∧n, L2 = P3∧P4∧n from \
                points; its parts identified symbolically, then the rule run on exact cases"
         .into();
@@ -792,7 +794,6 @@ struct LineLineParts {
 }
 
 fn line_line_parts(g: &SymMultivector) -> LineLineParts {
-    use ga_core::symbolic::thesis::thesis_name;
     // Thesis-spelled coefficient of the blade with our bitmask `m`.
     let t = |m: u8| {
         let (sign, _) = thesis_name(m);
@@ -855,7 +856,7 @@ fn ratio_line(what: &str, got: &[Poly], want: &[Poly], detail: &mut String) -> b
     }
     match gm.ratio_to(&wm) {
         Some(k) => {
-            let _ = writeln!(detail, "- {what}: k = {}", super::rat_str(&k));
+            let _ = writeln!(detail, "- {what}: k = {}", rat_str(&k));
             true
         }
         None if gm == wm => {

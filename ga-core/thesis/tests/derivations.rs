@@ -1,16 +1,14 @@
-//! Keeps the report on the thesis's formulas true (see `ga-core/examples/thesis_derivations`):
-//! every numbered equation of Cap. II §3 (II.51–II.82) and Apéndice A (A.1–A.106) has an entry,
-//! the entry list `tests/fixtures/thesis_equations.txt` matches the fixture and the verdicts
-//! computed, errata fail as printed and pass as corrected, each names a distinct error that the
-//! report describes, and the committed report equals the generator's output.
+//! Keeps the report on the thesis's formulas true (`cargo run --release -p ga-thesis`): every
+//! numbered equation of Cap. II §3 (II.51–II.82) and Apéndice A (A.1–A.106) has an entry, the
+//! entry list `fixtures/equations.txt` matches the fixture and the verdicts computed, errata
+//! fail as printed and pass as corrected, each names a distinct error that the report describes,
+//! and the committed report equals the generator's output.
 
-#[path = "../examples/thesis_derivations/checks.rs"]
-mod checks;
-
-use checks::{Row, Verdict};
+use ga_thesis as checks;
+use ga_thesis::{Fixture, Row, Verdict};
 
 /// The entry list: id, category, verdict key.
-const LIST: &str = include_str!("fixtures/thesis_equations.txt");
+const LIST: &str = ga_thesis::EQUATIONS;
 
 fn rows() -> &'static [Row] {
     static ROWS: std::sync::OnceLock<Vec<Row>> = std::sync::OnceLock::new();
@@ -47,7 +45,7 @@ fn every_numbered_equation_has_an_entry() {
 
 #[test]
 fn the_list_is_the_fixture_and_the_report() {
-    let fx = ga_core::symbolic::thesis::Fixture::parse(checks::FIXTURE).expect("fixture parses");
+    let fx = Fixture::parse(ga_thesis::FORMULAS).expect("fixture parses");
     let ids: Vec<&str> = fx.entries.iter().map(|e| e.id.as_str()).collect();
     let listed: Vec<&str> = list().iter().map(|(id, _, _)| *id).collect();
     assert_eq!(ids, listed, "fixture entries and list differ");
@@ -66,7 +64,7 @@ fn every_entry_has_its_listed_verdict() {
     let want: Vec<(&str, &str)> = list().iter().map(|(id, _, v)| (*id, *v)).collect();
     assert_eq!(
         got, want,
-        "verdicts changed: regenerate with `-- --list` after checking why"
+        "verdicts changed: regenerate with `cargo run --release -p ga-thesis -- --write` after checking why"
     );
 }
 
@@ -130,11 +128,19 @@ fn committed_report_is_what_the_generator_prints() {
     let generated = checks::document(rows());
     assert!(
         committed == generated,
-        "{path} is stale: run `cargo run --release -p ga-core --example thesis_derivations -- --write`"
+        "{path} is stale: run `cargo run --release -p ga-thesis -- --write`"
     );
     assert_eq!(
         checks::equation_list(rows()),
         LIST,
-        "the entry list is stale: run the example with `-- --list`"
+        "the entry list is stale: run `cargo run --release -p ga-thesis -- --write`"
     );
+}
+
+#[test]
+fn fixture_errors_name_the_line() {
+    let message = Fixture::parse("  continued\n").unwrap_err().to_string();
+    for part in ["line 1", "continuation line outside an entry"] {
+        assert!(message.contains(part), "{part:?} missing from: {message}");
+    }
 }
