@@ -6,4 +6,6 @@
 
 pub mod adversarial;
 pub mod conformal;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod oracle;
