@@ -6,6 +6,8 @@
 
 pub mod adversarial;
 pub mod conformal;
+pub mod double_sphere;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod oracle;
+pub mod sphere_tree;
