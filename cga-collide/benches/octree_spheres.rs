@@ -1,6 +1,7 @@
 //! Octree sphere trees (Fuentes Socorro's method): build time per depth, and one collision query on the
 //! `cga` main job's placement (bunny00 vs armadillo, `--unit`, armadillo moved by
-//! `(0.3, 0.05, 0)`) by the paper's method and the simultaneous descent, with the exact BVH
+//! `(0.3, 0.05, 0)`) by the paper's method (`cga_collide::testing::sphere_tree::paper_method`) and the
+//! simultaneous descent (`SphereTree::collides`), with the exact BVH
 //! query (`Collider::collides_solid`) as the baseline in the same run; plus a near miss (the
 //! solids do not collide, the depth-5 trees do: a false positive of the approximation).
 //!
@@ -8,11 +9,11 @@
 
 use std::hint::black_box;
 
-use cga_collide::collider::Collider;
-use cga_collide::hierarchy::sphere_tree::collide;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::nalgebra::{Isometry3, UnitQuaternion, Vector3};
+use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::testing::sphere_tree::paper_method;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 
 fn build_time(c: &mut Criterion) {
@@ -49,17 +50,17 @@ fn queries(c: &mut Criterion) {
         eprintln!(
             "{name}: exact {}, paper {}, simultaneous {}",
             a.collides_solid(&pb),
-            collide::paper_method(&ta, &mb).collides,
-            collide::simultaneous(&ta, &mb).collides
+            paper_method(&ta, &mb).collides,
+            ta.collides(&mb).collides
         );
         g.bench_function(format!("{name}/exact_bvh_baseline"), |bch| {
             bch.iter(|| black_box(a.collides_solid(&pb)))
         });
         g.bench_function(format!("{name}/paper"), |bch| {
-            bch.iter(|| black_box(collide::paper_method(&ta, &mb).collides))
+            bch.iter(|| black_box(paper_method(&ta, &mb).collides))
         });
         g.bench_function(format!("{name}/simultaneous"), |bch| {
-            bch.iter(|| black_box(collide::simultaneous(&ta, &mb).collides))
+            bch.iter(|| black_box(ta.collides(&mb).collides))
         });
     }
     g.finish();

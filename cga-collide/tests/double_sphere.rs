@@ -1,19 +1,16 @@
 //! The double-sphere tree of the double-sphere paper: Table 1's polyhedra, the tree's invariants and
-//! the exactness of `collide` against an independent brute force.
+//! the exactness of `DoubleSphereTree::collides_at` against an independent brute force.
 
 use std::sync::OnceLock;
 
-use cga_collide::collider::Collider;
-use cga_collide::hierarchy::double_sphere::enclosing::{
-    smallest_enclosing_ball, smallest_enclosing_ball_brute,
-};
-use cga_collide::hierarchy::double_sphere::inscribed::{chebyshev_brute, depth};
-use cga_collide::hierarchy::double_sphere::{
-    collide, collide_with, Decision, DoubleSphereTree, InnerSphereKind, Scratch,
-};
+use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::shape::polyhedron::{ConvexPolyhedron, PolyhedronError};
+use cga_collide::testing::double_sphere::{
+    chebyshev_brute, depth, part, smallest_enclosing_ball, smallest_enclosing_ball_brute,
+};
 use cga_collide::{Intersects, Triangle};
 use proptest::prelude::*;
 
@@ -191,7 +188,8 @@ fn brute(
     }
     let ca = Collider::new(ma.clone());
     let cb = Collider::new(mb.clone());
-    cb.contains_point(&ma.vertices()[0]) || ca.contains_point(&mb.vertices()[0])
+    cb.contains_point(&ma.vertices()[0])
+        || ca.contains_point(&mb.vertices()[0])
 }
 
 fn pose(t: [f64; 3], axis: [f64; 3], angle: f64) -> Isometry3<f64> {
@@ -206,7 +204,6 @@ fn pose(t: [f64; 3], axis: [f64; 3], angle: f64) -> Isometry3<f64> {
 
 #[test]
 fn quick_random_agreement() {
-    let mut scratch = Scratch::new();
     let mut rng = cga_collide::testing::adversarial::SplitMix64(42);
     let mut hits = 0;
     for (na, nb) in PAIRS {
@@ -224,7 +221,7 @@ fn quick_random_agreement() {
                         [rng.float(-1., 1.), rng.float(-1., 1.), rng.float(-1., 1.)],
                         rng.float(0., 6.3),
                     );
-                    let got = collide_with(&mut scratch, ta, &pa, tb, &pb);
+                    let got = ta.collides_at(&pa, tb, &pb);
                     let want = brute(poly(na), &pa, poly(nb), &pb);
                     assert_eq!(
                         got.collides, want,
@@ -256,16 +253,16 @@ fn all_trees() -> impl Iterator<
 fn outer_spheres_contain_their_node_and_are_minimal() {
     for (name, level, kind, t) in all_trees() {
         for (i, node) in t.nodes().iter().enumerate() {
-            let part = t.part(i);
-            for v in &part.vertices {
+            let sub = part(t, i);
+            for v in &sub.vertices {
                 assert!(
                     (v - node.outer.centre).norm() <= node.outer.radius,
                     "{name} L{level} {kind:?} node {i}"
                 );
             }
             // Minimal: against the brute force over all 1-4 point support sets (small nodes).
-            if level <= 2 && kind == InnerSphereKind::Centroid && part.vertices.len() <= 30 {
-                let b = smallest_enclosing_ball_brute(&part.vertices);
+            if level <= 2 && kind == InnerSphereKind::Centroid && sub.vertices.len() <= 30 {
+                let b = smallest_enclosing_ball_brute(&sub.vertices);
                 assert!(
                     (b.radius - node.outer.radius).abs() < 1e-9,
                     "{name} L{level} node {i}: {} vs brute {}",
@@ -312,7 +309,7 @@ fn inner_spheres_are_inside_and_chebyshev_is_larger() {
         assert_eq!(t.nodes().len(), cheb.nodes().len());
         for (i, (a, b)) in t.nodes().iter().zip(cheb.nodes()).enumerate() {
             for (kind, s) in [("centroid", &a.inner), ("chebyshev", &b.inner)] {
-                let planes = t.part(i).planes();
+                let planes = part(t, i).planes();
                 assert!(
                     depth(&planes, &s.centre) >= s.radius,
                     "{name} L{level} node {i} {kind}"
@@ -326,7 +323,7 @@ fn inner_spheres_are_inside_and_chebyshev_is_larger() {
             // The same splits for both kinds.
             assert_eq!(a.outer, b.outer);
             // Chebyshev is the LP optimum (brute force over plane quadruples, small nodes).
-            let planes = t.part(i).planes();
+            let planes = part(t, i).planes();
             if planes.len() <= 20 {
                 let (_, r) = chebyshev_brute(&planes);
                 assert!(
@@ -353,21 +350,21 @@ fn children_partition_the_parent_and_labels_hold() {
             .collect();
         let mut leaves = 0;
         for (i, node) in t.nodes().iter().enumerate() {
-            let v = t.part(i).volume();
+            let v = part(t, i).volume();
             assert!(v > 0.0);
             match node.children {
                 Some([c0, c1]) => {
-                    let (v0, v1) = (t.part(c0 as usize).volume(), t.part(c1 as usize).volume());
+                    let (v0, v1) = (part(t, c0 as usize).volume(), part(t, c1 as usize).volume());
                     assert!(
                         ((v0 + v1) - v).abs() <= 1e-9 * v,
                         "{name} L{level} {kind:?} node {i}: {v0} + {v1} != {v}"
                     );
                     // Each child lies on its side of the split plane.
                     let (a, d) = node.split.unwrap();
-                    for p in &t.part(c0 as usize).vertices {
+                    for p in &part(t, c0 as usize).vertices {
                         assert!(a.dot(&p.coords) <= d + 1e-9);
                     }
-                    for p in &t.part(c1 as usize).vertices {
+                    for p in &part(t, c1 as usize).vertices {
                         assert!(a.dot(&p.coords) >= d - 1e-9);
                     }
                 }
@@ -390,7 +387,7 @@ fn children_partition_the_parent_and_labels_hold() {
             .iter()
             .enumerate()
             .filter(|(_, n)| n.is_leaf())
-            .map(|(i, _)| t.part(i).volume())
+            .map(|(i, _)| part(t, i).volume())
             .sum();
         assert!((volume - poly(name).volume()).abs() < 1e-9);
     }
@@ -473,7 +470,6 @@ fn random_rotation(rng: &mut cga_collide::testing::adversarial::SplitMix64) -> U
 #[test]
 fn touching_and_near_touching_agree_with_brute_force() {
     let mut rng = cga_collide::testing::adversarial::SplitMix64(99);
-    let mut scratch = Scratch::new();
     // Bisect along random directions to the last colliding float and the first free one.
     for (na, nb) in PAIRS {
         for _ in 0..6 {
@@ -505,13 +501,8 @@ fn touching_and_near_touching_agree_with_brute_force() {
                 let want = brute(poly(na), &pa, poly(nb), &at(s));
                 for level in 0..=4 {
                     for kind in KINDS {
-                        let got = collide_with(
-                            &mut scratch,
-                            tree(na, level, kind),
-                            &pa,
-                            tree(nb, level, kind),
-                            &at(s),
-                        );
+                        let got =
+                            tree(na, level, kind).collides_at(&pa, tree(nb, level, kind), &at(s));
                         assert_eq!(
                             got.collides, want,
                             "{na}-{nb} L{level} {kind:?} s={s:e} dir={dir:?}"
@@ -534,7 +525,7 @@ fn exact_face_contact_and_identical_poses() {
             for k in -40..=40 {
                 let y = k as f64 / 32.0;
                 let pb = Isometry3::translation(2.0 * s, y, 0.0);
-                let got = collide(c, &Isometry3::identity(), c, &pb);
+                let got = c.collides_at(&Isometry3::identity(), c, &pb);
                 assert_eq!(
                     got.collides,
                     brute(poly("cube"), &Isometry3::identity(), poly("cube"), &pb)
@@ -548,7 +539,7 @@ fn exact_face_contact_and_identical_poses() {
                     random_rotation(&mut rng),
                 );
                 let t = tree(na, level, kind);
-                assert!(collide(t, &pose, t, &pose).collides);
+                assert!(t.collides_at(&pose, t, &pose).collides);
             }
         }
     }
@@ -584,9 +575,9 @@ fn containment_without_surface_contact() {
                 );
                 let pr = Isometry3::from_parts(Translation3::identity(), random_rotation(&mut rng));
                 let want = brute(&small, &ps, poly("rh"), &pr);
-                let got = collide(&ts, &ps, trh, &pr);
+                let got = ts.collides_at(&ps, trh, &pr);
                 assert_eq!(got.collides, want);
-                let got2 = collide(trh, &pr, &ts, &ps);
+                let got2 = trh.collides_at(&pr, &ts, &ps);
                 assert_eq!(got2.collides, want);
                 if want
                     && got.decided_by != Decision::InnerSpheres
@@ -618,9 +609,9 @@ fn containment_without_surface_contact() {
             let z = k as f64 / 100.0;
             let pt = Isometry3::translation(0.0, 0.0, z);
             let want = brute(&tiny, &pt, poly("rh"), &Isometry3::identity());
-            let got = collide(&tt, &pt, trh, &Isometry3::identity());
+            let got = tt.collides_at(&pt, trh, &Isometry3::identity());
             assert_eq!(got.collides, want, "z = {z}");
-            let got2 = collide(trh, &Isometry3::identity(), &tt, &pt);
+            let got2 = trh.collides_at(&Isometry3::identity(), &tt, &pt);
             assert_eq!(got2.collides, want, "z = {z}");
             by_containment += usize::from(got.decided_by == Decision::Containment);
             by_containment += usize::from(got2.decided_by == Decision::Containment);
@@ -654,7 +645,7 @@ proptest! {
         let pa = Isometry3::from_parts(Translation3::new(ta[0], ta[1], ta[2]), rot(qa));
         let tb = Vector3::new(ta[0], ta[1], ta[2]) + Vector3::new(tb[0], tb[1], tb[2]) * 0.6;
         let pb = Isometry3::from_parts(Translation3::from(tb), rot(qb));
-        let got = collide(tree(na, level, kind), &pa, tree(nb, level, kind), &pb);
+        let got = tree(na, level, kind).collides_at(&pa, tree(nb, level, kind), &pb);
         prop_assert_eq!(got.collides, brute(poly(na), &pa, poly(nb), &pb));
     }
 }

@@ -286,15 +286,15 @@ fn generated_functions_agree_with_the_rust_products() {
             let input: Vec<f64> = (0..samples as usize * width_in)
                 .map(|_| rng.float(-2.0, 2.0))
                 .collect();
-            let out = device
-                .evaluate(
-                    &shader,
-                    "main",
-                    &input,
-                    samples as usize * width_out,
-                    samples,
-                )
-                .expect("evaluation");
+            let out = cga_collide::testing::gpu::evaluate(
+                &device,
+                &shader,
+                "main",
+                &input,
+                samples as usize * width_out,
+                samples,
+            )
+            .expect("evaluation");
             for s in 0..samples as usize {
                 let (mut at_in, mut at_out) = (s * width_in, s * width_out);
                 for f in chunk {

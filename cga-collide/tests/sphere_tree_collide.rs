@@ -6,14 +6,14 @@
 
 use std::sync::OnceLock;
 
-use cga_collide::collider::{Collider, Mode};
-use cga_collide::hierarchy::sphere_tree::octree::{
-    ball_contains_box, build, cell_of, BuildOptions,
-};
-use cga_collide::hierarchy::sphere_tree::tribox::triangle_meets_box;
-use cga_collide::hierarchy::sphere_tree::{collide, CellState, NestedNode, SphereTree};
+use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
+use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::testing::sphere_tree::{
+    self as methods, ball_contains_box, cell_of, triangle_meets_box,
+};
 use proptest::prelude::*;
 
 fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
@@ -31,9 +31,9 @@ fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
 }
 
 fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
-    let reference = collide::brute_force(x, y).collides;
-    let s = collide::paper_method(x, y);
-    let m = collide::simultaneous(x, y);
+    let reference = methods::brute_force(x, y).collides;
+    let s = methods::paper_method(x, y);
+    let m = x.collides(y);
     prop_assert_eq!(s.collides, reference);
     prop_assert_eq!(m.collides, reference);
     // The witnesses really are meeting leaves.
@@ -47,7 +47,7 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
         }
     }
     // The paper's method as published never claims a collision that is not there.
-    prop_assert!(!collide::paper_method_as_published(x, y).collides || reference);
+    prop_assert!(!methods::paper_method_as_published(x, y).collides || reference);
     Ok(reference)
 }
 
@@ -91,10 +91,10 @@ fn paper_method_as_published_misses_a_collision() {
     .unwrap();
     assert!(y.nesting_violations().is_empty());
     let x = SphereTree::single([1.5, 0.0, 0.0], 1.0, CellState::Full).unwrap();
-    assert!(collide::brute_force(&x, &y).collides);
-    assert!(collide::paper_method(&x, &y).collides);
-    assert!(collide::simultaneous(&x, &y).collides);
-    assert!(!collide::paper_method_as_published(&x, &y).collides);
+    assert!(methods::brute_force(&x, &y).collides);
+    assert!(methods::paper_method(&x, &y).collides);
+    assert!(x.collides(&y).collides);
+    assert!(!methods::paper_method_as_published(&x, &y).collides);
 }
 
 /// A closed, outward-oriented cube mesh.
@@ -109,9 +109,8 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
     let tris: Vec<[[f64; 3]; 3]> = (0..mesh.num_triangles())
         .map(|i| mesh.corners(i as u32).map(|p| [p.x, p.y, p.z]))
         .collect();
-    let partial = |b: &cga_collide::bounding::Aabb| {
-        tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max))
-    };
+    let partial =
+        |b: &cga_collide::bounding::Aabb| tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max));
     let mut level = vec![0u32; tree.len()];
     for i in 0..tree.len() {
         for ch in tree.children(i) {
@@ -126,9 +125,7 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
             CellState::Partial
         } else {
             assert!(
-                c.clone()
-                    .with_mode(Mode::Brute)
-                    .contains_point(&n.centre.into()),
+                c.clone().with_mode(Mode::Brute).contains_point(&n.centre.into()),
                 "node {i} is empty"
             );
             CellState::Full
@@ -239,6 +236,10 @@ proptest! {
         let moved = f.tb.transformed(&iso);
         let trees = agree(&f.ta, &moved)?;
         agree(&moved, &f.ta)?;
+        // The posed entry point moves both trees the same way.
+        let posed = f.ta.collides_at(&Isometry3::identity(), &f.tb, &iso);
+        let id = Isometry3::identity();
+        prop_assert_eq!(posed, f.ta.transformed(&id).collides(&moved));
         let exact = f.a.collides_solid(&f.b.placed(&iso).unwrap());
         // No false negatives: the leaf balls cover the solids.
         prop_assert!(trees || !exact);

@@ -3,7 +3,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use cga_collide::hierarchy::sphere_tree::format::{read, read_lenient, write, FormatError};
-use cga_collide::hierarchy::sphere_tree::{collide, CellState, NestedNode, SphereTree};
+use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
+use cga_collide::testing::sphere_tree as methods;
 use proptest::prelude::*;
 
 const NO_COLLISION: &str = include_str!("fixtures/spheretree/paper_no_collision.txt");
@@ -150,26 +151,26 @@ fn seed_examples_give_the_seeds_answers() {
     for (text, expected) in [(NO_COLLISION, false), (COLLISION, true)] {
         let trees = read(text).unwrap();
         let (x, y) = (&trees[0], &trees[1]);
-        let reference = collide::brute_force(x, y).collides;
+        let reference = methods::brute_force(x, y).collides;
         assert_eq!(reference, expected);
         for r in [
-            collide::paper_method(x, y),
-            collide::paper_method_as_published(x, y),
-            collide::simultaneous(x, y),
-            collide::paper_method(y, x),
-            collide::simultaneous(y, x),
+            methods::paper_method(x, y),
+            methods::paper_method_as_published(x, y),
+            x.collides(y),
+            methods::paper_method(y, x),
+            y.collides(x),
         ] {
             assert_eq!(r.collides, expected, "{r:?}");
         }
         // The same on the trees made nested (parents grown to contain their children).
         let (nx, ny) = (x.nested_enclosing(), y.nested_enclosing());
         assert!(nx.nesting_violations().is_empty());
-        assert_eq!(collide::paper_method(&nx, &ny).collides, expected);
-        assert_eq!(collide::simultaneous(&nx, &ny).collides, expected);
+        assert_eq!(methods::paper_method(&nx, &ny).collides, expected);
+        assert_eq!(nx.collides(&ny).collides, expected);
     }
     // Without collision the roots already answer: one test.
     let trees = read(NO_COLLISION).unwrap();
-    assert_eq!(collide::paper_method(&trees[0], &trees[1]).sphere_tests, 1);
+    assert_eq!(methods::paper_method(&trees[0], &trees[1]).sphere_tests, 1);
 }
 
 #[test]
@@ -409,7 +410,7 @@ fn deep_chains_do_not_overflow_the_stack() {
     assert_eq!(trees[0].len(), depth + 1);
     assert_eq!(trees[0].height(), depth);
     assert_eq!(read(&write(&trees)).unwrap(), trees);
-    assert!(collide::paper_method(&trees[0], &trees[0]).collides);
-    assert!(collide::simultaneous(&trees[0], &trees[0]).collides);
+    assert!(methods::paper_method(&trees[0], &trees[0]).collides);
+    assert!(trees[0].collides(&trees[0]).collides);
     let _ = trees[0].to_nested();
 }

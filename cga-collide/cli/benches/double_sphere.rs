@@ -1,4 +1,4 @@
-//! The double-sphere tree's `collide` at level 3 on the paper's four pairs, against the
+//! The double-sphere tree's `collides_at` at level 3 on the paper's four pairs, against the
 //! brute-force exact answer (every triangle pair plus containment) and the GJK reference of
 //! [`cga_collide::collider::convex`], on the same random placements.
 //!
@@ -14,11 +14,9 @@
 use std::hint::black_box;
 
 use cga_cli::experiment::placement;
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
-use cga_collide::hierarchy::double_sphere::{
-    collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
-};
+use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3};
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::{Intersects, Triangle};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
@@ -73,12 +71,11 @@ fn bench(c: &mut Criterion) {
                 DoubleSphereTree::build(&a, 3, kind).unwrap(),
                 DoubleSphereTree::build(&b, 3, kind).unwrap(),
             );
-            let mut scratch = Scratch::new();
             group.bench_function(BenchmarkId::new(format!("tree_{kind:?}"), &name), |bench| {
                 bench.iter(|| {
                     poses
                         .iter()
-                        .filter(|(pa, pb)| collide_with(&mut scratch, &ta, pa, &tb, pb).collides)
+                        .filter(|(pa, pb)| ta.collides_at(pa, &tb, pb).collides)
                         .count()
                 })
             });

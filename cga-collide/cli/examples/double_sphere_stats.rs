@@ -10,11 +10,9 @@
 use std::collections::BTreeMap;
 
 use cga_cli::experiment::placement;
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
-use cga_collide::hierarchy::double_sphere::{
-    collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
-};
+use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::Point3;
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 fn main() {
@@ -40,11 +38,10 @@ fn main() {
                 DoubleSphereTree::build(&b, level, kind).unwrap(),
             );
             let poses: Vec<_> = (0..n as u64).map(|i| placement(2009, i, radius)).collect();
-            let mut scratch = Scratch::new();
             let mut decisions: BTreeMap<String, usize> = BTreeMap::new();
             let (mut spheres, mut triangles, mut collisions, mut mismatches) = (0u64, 0u64, 0, 0);
             for (pa, pb) in &poses {
-                let out = collide_with(&mut scratch, &ta, pa, &tb, pb);
+                let out = ta.collides_at(pa, &tb, pb);
                 *decisions
                     .entry(format!("{:?}", out.decided_by))
                     .or_default() += 1;

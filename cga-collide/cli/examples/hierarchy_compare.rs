@@ -17,13 +17,11 @@ use std::time::Instant;
 
 use cga_cli::experiment::{calibrate_radius, placement, PAPER_PAIRS};
 use cga_cli::plot::{svg_bar_charts, BarChart};
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
-use cga_collide::hierarchy::double_sphere::{
-    collide_with, DoubleSphereTree, InnerSphereKind, Scratch,
-};
+use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
-use cga_collide::hierarchy::sphere_tree::{collide, SphereTree};
-use cga_collide::query::{Collider, Mode};
+use cga_collide::hierarchy::sphere_tree::SphereTree;
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
+use cga_collide::collider::Collider;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 /// What one method answered over the placements.
@@ -135,7 +133,6 @@ fn main() {
                     ..*m
                 })
                 .collect::<Vec<_>>();
-            let mut scratch = Scratch::new();
             let (mut va, mut vb) = (Vec::new(), Vec::new());
             for i in 0..placements {
                 let (pose_a, pose_b) = placement(seed, i, radius);
@@ -156,20 +153,18 @@ fn main() {
                 };
                 for (k, (ta, tb)) in ds.iter().enumerate() {
                     let t = Instant::now();
-                    let answer = collide_with(&mut scratch, ta, &pose_a, tb, &pose_b).collides;
+                    let answer = ta.collides_at(&pose_a, tb, &pose_b).collides;
                     record(&mut methods[k], answer, t.elapsed().as_nanos());
                 }
                 let t = Instant::now();
                 let answer = match (ca.placed(&pose_a), cb.placed(&pose_b)) {
-                    (Ok(x), Ok(y)) => x.collides_solid(&y, Mode::Bvh),
+                    (Ok(x), Ok(y)) => x.collides_solid(&y),
                     _ => unreachable!("finite poses of finite meshes"),
                 };
                 record(&mut methods[2], answer, t.elapsed().as_nanos());
                 for (k, (ta, tb)) in octrees.iter().enumerate() {
                     let t = Instant::now();
-                    let answer =
-                        collide::simultaneous(&ta.transformed(&pose_a), &tb.transformed(&pose_b))
-                            .collides;
+                    let answer = ta.collides_at(&pose_a, tb, &pose_b).collides;
                     record(&mut methods[3 + k], answer, t.elapsed().as_nanos());
                 }
             }

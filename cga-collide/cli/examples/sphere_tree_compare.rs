@@ -10,10 +10,11 @@
 use std::time::{Duration, Instant};
 
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
-use cga_collide::hierarchy::sphere_tree::{collide, SphereTree};
+use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion};
 use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
 
 /// splitmix64: a small deterministic generator (no dependency).
 struct Rng(u64);
@@ -116,14 +117,14 @@ fn main() {
         assert!(ta.nesting_violations().is_empty() && tb.nesting_violations().is_empty());
         let moved: Vec<SphereTree> = isos.iter().map(|iso| tb.transformed(iso)).collect();
 
-        let time = |f: &dyn Fn(&SphereTree, &SphereTree) -> collide::CollisionResult| {
+        let time = |f: &dyn Fn(&SphereTree, &SphereTree) -> CollisionResult| {
             let t = Instant::now();
-            let r: Vec<collide::CollisionResult> = moved.iter().map(|m| f(&ta, m)).collect();
+            let r: Vec<CollisionResult> = moved.iter().map(|m| f(&ta, m)).collect();
             (t.elapsed(), r)
         };
-        let (paper_t, paper) = time(&collide::paper_method);
-        let (sim_t, sim) = time(&collide::simultaneous);
-        let (_, written) = time(&collide::paper_method_as_published);
+        let (paper_t, paper) = time(&paper_method);
+        let (sim_t, sim) = time(&SphereTree::collides);
+        let (_, written) = time(&paper_method_as_published);
         let n = isos.len() as f64;
         let mut fp = 0;
         let mut fneg = 0;
@@ -145,9 +146,8 @@ fn main() {
                 misses += 1;
             }
         }
-        let tests = |r: &[collide::CollisionResult]| {
-            r.iter().map(|x| x.sphere_tests).sum::<u64>() as f64 / n
-        };
+        let tests =
+            |r: &[CollisionResult]| r.iter().map(|x| x.sphere_tests).sum::<u64>() as f64 / n;
         println!(
             "| {depth} | {} / {} | {} / {} | {:.1} / {:.1} | {} | {} / {} / {} | {:.1} | {:.1} | {:.0} | {:.0} | {fp} of {} | {fneg} of {} | {misses} |",
             ta.len(),

@@ -38,8 +38,8 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
+use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::collider::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
-use cga_collide::hierarchy::double_sphere::{collide_with, Decision, DoubleSphereTree, Scratch};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 /// The four pairs of the paper's experiment, in the order of its tables.
@@ -341,7 +341,6 @@ pub fn run(
     (0..chunks)
         .into_par_iter()
         .map(|c| {
-            let mut scratch = Scratch::new();
             let mut buffers = (Vec::new(), Vec::new());
             let mut out = ExperimentResult {
                 tallies: vec![Tally::default(); variants.len()],
@@ -361,7 +360,7 @@ pub fn run(
                 }] += 1;
                 for (k, v) in variants.iter().enumerate() {
                     let start = Instant::now();
-                    let outcome = collide_with(&mut scratch, &v.a, &poses.0, &v.b, &poses.1);
+                    let outcome = v.a.collides_at(&poses.0, &v.b, &poses.1);
                     let nanos = start.elapsed().as_nanos() as u64;
                     let t = &mut out.tallies[k];
                     let d = decision_index(outcome.decided_by);

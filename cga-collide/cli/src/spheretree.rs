@@ -12,11 +12,11 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use cga_collide::hierarchy::sphere_tree::collide::{self, CollisionResult};
 use cga_collide::hierarchy::sphere_tree::format;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
-use cga_collide::hierarchy::sphere_tree::SphereTree;
+use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
 use cga_collide::query::Collider;
+use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
 use clap::{Args, Subcommand, ValueEnum};
 use serde_json::json;
 
@@ -217,9 +217,9 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         Method::Both => "both",
     };
     let single = match args.method {
-        Method::Paper => Some(timed(collide::paper_method)),
-        Method::PaperAsPublished => Some(timed(collide::paper_method_as_published)),
-        Method::Simultaneous => Some(timed(collide::simultaneous)),
+        Method::Paper => Some(timed(paper_method)),
+        Method::PaperAsPublished => Some(timed(paper_method_as_published)),
+        Method::Simultaneous => Some(timed(SphereTree::collides)),
         Method::Both => None,
     };
     if let Some((r, micros)) = single {
@@ -242,8 +242,8 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         }
         return Ok(());
     }
-    let (s, s_us) = timed(collide::paper_method);
-    let (m, m_us) = timed(collide::simultaneous);
+    let (s, s_us) = timed(paper_method);
+    let (m, m_us) = timed(SphereTree::collides);
     if s.collides != m.collides {
         // Possible only for trees whose child balls are not inside their parents.
         eprintln!(

@@ -788,11 +788,11 @@ impl Device {
         Ok(words)
     }
 
-    /// Runs `entry` of a compute shader `source` that reads `input` at binding 0 (an
-    /// `array<f64>` or `array<f32>` in the device's [`precision`](Self::precision)) and
-    /// writes `output_len` numbers to binding 1; returns them as `f64`. For checking device
-    /// code against the CPU (the generated functions of `ga_core::cga::wgsl`).
-    pub fn evaluate(
+    /// Runs `entry` of a compute shader `source` that reads `input` at binding 0 and writes
+    /// `output_len` numbers to binding 1 (the test hook
+    /// `cga_collide::testing::gpu::evaluate`).
+    #[cfg(feature = "testing")]
+    pub(crate) fn evaluate(
         &self,
         source: &str,
         entry: &str,

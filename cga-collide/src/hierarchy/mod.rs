@@ -1,6 +1,6 @@
 //! The papers' sphere hierarchies. They find candidate pairs fast; every final answer is still
 //! decided by the exact tests of [`crate::query`]. The box tree over a mesh's triangles that the
-//! mesh queries use is [`crate::bvh`].
+//! mesh queries use is [`crate::bounding`].
 //!
 //! | module | what it is | answers |
 //! |---|---|---|

@@ -5,7 +5,7 @@
 //! | [`Segment`], [`Triangle`] | closed segment and closed triangle (a degenerate triangle is the segment or point it collapses to) |
 //! | [`Sphere`], [`Ball`] | the spherical *surface* and the solid ball |
 //! | [`polyhedron::ConvexPolyhedron`] | a validated convex polyhedron (vertices and faces) |
-//! | [`mesh::TriMesh`] | an indexed triangle mesh, with OBJ/OFF/PLY/STL loaders and built-in fixtures |
+//! | [`mesh::TriMesh`] | an indexed triangle mesh, with OBJ/OFF/PLY/STL loaders and built-in fixtures (feature `builtin-meshes`) |
 //!
 //! Constructors are fallible: non-finite input is a typed error ([`crate::Error`],
 //! [`polyhedron::PolyhedronError`]), never a panic. The conformal

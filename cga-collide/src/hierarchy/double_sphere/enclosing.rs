@@ -121,6 +121,7 @@ pub fn smallest_enclosing_ball(points: &[Point3<f64>]) -> CentreRadius {
 
 /// Brute force for tests: the smallest among the balls of all 1- to 4-point support sets that
 /// contain every point (within a relative tolerance). `O(n⁵)`: small inputs only.
+#[cfg(any(test, feature = "testing"))]
 pub fn smallest_enclosing_ball_brute(points: &[Point3<f64>]) -> CentreRadius {
     let n = points.len();
     let mut best = CentreRadius {

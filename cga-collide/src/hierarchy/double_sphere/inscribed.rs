@@ -117,6 +117,7 @@ fn simplex_chebyshev(planes: &[(Vector3<f64>, f64)], start: &Point3<f64>) -> Opt
 
 /// Brute force for tests: the best centre among all vertices of the LP's feasible region
 /// (every 4 planes' solution of `n_f·c + r = d_f` that satisfies all constraints).
+#[cfg(any(test, feature = "testing"))]
 pub fn chebyshev_brute(planes: &[(Vector3<f64>, f64)]) -> (Point3<f64>, f64) {
     let m = planes.len();
     let mut best = (Point3::origin(), f64::NEG_INFINITY);

@@ -5,10 +5,10 @@
 //! A binary tree, stored flat (`Vec` of [`DoubleSphereNode`]s, root at index 0). Every node holds a convex
 //! sub-polyhedron of the original solid (the root holds the solid itself) with
 //! * its **outer sphere**: the smallest sphere enclosing the sub-polyhedron's vertices
-//!   ([`enclosing`]: Welzl's algorithm in `f64`, then the radius recomputed as the largest
+//!   (Welzl's algorithm in `f64`, then the radius recomputed as the largest
 //!   vertex distance rounded upwards, plus a margin of `1e-12` times the solid's size that
 //!   covers the rounding of the clipped vertices), so it provably contains the node's region;
-//! * its **inner sphere** ([`inscribed`]), of a selectable [`InnerSphereKind`]: the paper's
+//! * its **inner sphere**, of a selectable [`InnerSphereKind`]: the paper's
 //!   (centre the centroid, radius the smallest distance from it to the node's faces) or the
 //!   largest inscribed sphere (the Chebyshev centre, by a small linear programme). Either radius
 //!   is also limited by the distances to the planes of all the original triangles and reduced by
@@ -20,7 +20,7 @@
 //! perpendicular to its principal axis: the eigenvector of the largest eigenvalue of the
 //! covariance matrix of eq. (3), taken over the vertices of the triangles of the node's faces
 //! (Gottschalk's triangle form, `nalgebra::SymmetricEigen`); the two children are the convex
-//! clippings of the node's sub-polyhedron by the two half-spaces ([`clip`]). So level 0 is the
+//! clippings of the node's sub-polyhedron by the two half-spaces. So level 0 is the
 //! root alone and level `L` has up to `2^L` leaves (fewer if a cut would leave an empty child);
 //! the paper's experiments use level 3. Solids with cubic or icosahedral symmetry have an
 //! isotropic covariance at the root, where the principal axis is whatever the eigen-solver
@@ -33,13 +33,14 @@
 //! tests at the leaves run on these unclipped triangles, so they are the exact test of the
 //! solids' surfaces and every piece of surface is covered by some leaf.
 //!
-//! # The test ([`collide`])
+//! # The test ([`DoubleSphereTree::collides_at`])
 //! The paper's Algorithm 1 in a simultaneous depth-first descent: outer spheres reject, two
 //! internal labels with touching outer spheres or two touching inner spheres accept, and leaves
 //! go to Algorithm 2, the exact triangle–triangle test ([`crate::Triangle`]'s `intersects`).
-//! See [`traverse`] for the details and the rounding analysis that makes the answer exact for
-//! the solids bounded by the triangles with vertices `pose * v` (nalgebra's `Isometry3 *
-//! Point3` in `f64`, as [`TriMesh::transformed`](crate::shape::mesh::TriMesh::transformed) does).
+//! See [`DoubleSphereTree::collides_at`] for the details and the rounding analysis that makes
+//! the answer exact for the solids bounded by the triangles with vertices `pose * v`
+//! (nalgebra's `Isometry3 * Point3` in `f64`, as
+//! [`TriMesh::transformed`](crate::shape::mesh::TriMesh::transformed) does).
 //!
 //! # Paper versus ours
 //! Following the paper: the binary split by the principal-axis plane through the outer centre,
@@ -69,7 +70,7 @@
 //!   internal region holds no surface.
 //!
 //! ```
-//! use cga_collide::hierarchy::double_sphere::{collide, Decision, DoubleSphereTree, InnerSphereKind};
+//! use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSphereKind};
 //! use cga_collide::nalgebra::{Isometry3, Vector3};
 //! use cga_collide::shape::polyhedron::ConvexPolyhedron;
 //!
@@ -79,37 +80,37 @@
 //! let here = Isometry3::identity();
 //! // Far apart: rejected by the outer spheres at the root.
 //! let far = Isometry3::translation(5.0, 0.0, 0.0);
-//! let out = collide(&troct, &here, &diamond, &far);
+//! let out = troct.collides_at(&here, &diamond, &far);
 //! assert!(!out.collides);
 //! assert_eq!(out.decided_by, Decision::OuterSpheres);
 //! // Deeply overlapping: accepted by the inner spheres.
 //! let near = Isometry3::translation(0.1, 0.0, 0.0);
-//! let out = collide(&troct, &here, &diamond, &near);
+//! let out = troct.collides_at(&here, &diamond, &near);
 //! assert!(out.collides);
 //! assert_eq!(out.decided_by, Decision::InnerSpheres);
 //! // Two cubes sharing a face exactly (x = s and x = -s + 2s, both exact in f64): touching
 //! // counts, found by the exact face tests.
 //! let cube = DoubleSphereTree::build(&ConvexPolyhedron::cube(), 3, InnerSphereKind::Centroid).unwrap();
 //! let s = cube.polyhedron().vertices()[0].x.abs();
-//! let out = collide(&cube, &here, &cube, &Isometry3::translation(2.0 * s, 0.0, 0.0));
+//! let out = cube.collides_at(&here, &cube, &Isometry3::translation(2.0 * s, 0.0, 0.0));
 //! assert!(out.collides);
 //! assert_eq!(out.decided_by, Decision::Faces);
 //! // A hair further apart: no contact.
-//! let out = collide(&cube, &here, &cube, &Isometry3::translation(2.0 * s + 1e-15, 0.0, 0.0));
+//! let out = cube.collides_at(&here, &cube, &Isometry3::translation(2.0 * s + 1e-15, 0.0, 0.0));
 //! assert!(!out.collides);
 //! ```
 
-pub mod clip;
-pub mod enclosing;
-pub mod inscribed;
-pub mod traverse;
+pub(crate) mod clip;
+pub(crate) mod enclosing;
+pub(crate) mod inscribed;
+mod traverse;
 
 use nalgebra::{Point3, SymmetricEigen, Vector3};
 use thiserror::Error;
 
 use crate::shape::polyhedron::ConvexPolyhedron;
 use clip::{polygon_meets_halfspaces, SubPolyhedron};
-pub use traverse::{collide, collide_with, Decision, Outcome, Scratch};
+pub use traverse::{Decision, Outcome};
 
 /// Which inner sphere the nodes get.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -168,12 +169,12 @@ pub struct DoubleSphereNode {
     pub split: Option<(Vector3<f64>, f64)>,
     /// Depth (the root is 0).
     pub depth: u32,
-    /// Range of this leaf's original triangles in [`DoubleSphereTree::leaf_triangles`] (empty
-    /// for inner nodes).
-    pub triangles: std::ops::Range<u32>,
+    /// Range of this leaf's original triangles in the tree's leaf-triangle list (empty for
+    /// inner nodes; [`DoubleSphereTree::leaf_triangles`] reads it).
+    pub(crate) triangles: std::ops::Range<u32>,
     /// Range of this node's face planes in the tree's node-plane list: the supporting planes of
     /// the original faces that the triangles of the leaves below it belong to.
-    pub planes: std::ops::Range<u32>,
+    pub(crate) planes: std::ops::Range<u32>,
 }
 
 impl DoubleSphereNode {
@@ -189,6 +190,8 @@ impl DoubleSphereNode {
 pub struct DoubleSphereTree {
     polyhedron: ConvexPolyhedron,
     nodes: Vec<DoubleSphereNode>,
+    /// The nodes' sub-polyhedra, kept for the tests only.
+    #[cfg(any(test, feature = "testing"))]
     parts: Vec<SubPolyhedron>,
     leaf_triangles: Vec<u32>,
     pub(crate) leaf_planes: Vec<(Vector3<f64>, f64)>,
@@ -377,6 +380,7 @@ impl DoubleSphereTree {
         Ok(DoubleSphereTree {
             polyhedron: polyhedron.clone(),
             nodes: builder.nodes,
+            #[cfg(any(test, feature = "testing"))]
             parts: builder.parts,
             leaf_triangles: builder.leaf_triangles,
             leaf_planes: builder.leaf_planes,
@@ -397,8 +401,9 @@ impl DoubleSphereTree {
         &self.nodes
     }
 
-    /// The sub-polyhedron of node `i`.
-    pub fn part(&self, i: usize) -> &SubPolyhedron {
+    /// The sub-polyhedron of node `i` (for tests: `cga_collide::testing::double_sphere::part`).
+    #[cfg(any(test, feature = "testing"))]
+    pub(crate) fn part(&self, i: usize) -> &SubPolyhedron {
         &self.parts[i]
     }
 

@@ -1,51 +1,6 @@
-//! The collision test between two [`DoubleSphereTree`]s under rigid motions: the paper's
-//! Algorithm 1 (outer spheres reject, labels and inner spheres accept, leaves go to
-//! Algorithm 2's exact face tests), plus an exact containment test.
-//!
-//! # What "exact" means here
-//! The ground truth is the pair of closed solids bounded by the triangles of
-//! [`ConvexPolyhedron::triangles`](crate::shape::polyhedron::ConvexPolyhedron::triangles) with vertices
-//! `pose * v` computed in `f64` by nalgebra (as
-//! [`TriMesh::transformed`](crate::shape::mesh::TriMesh::transformed) does); touching counts. The face
-//! tests run on exactly those triangles with the exact [`Triangle`] test. The spheres are
-//! stored in the body frame and their centres are transformed in `f64` at query time, so the
-//! sphere tests are made conservative:
-//!
-//! **The rounding bound.** nalgebra rotates `v` by the quaternion `q = (w, u)` as
-//! `t = 2 u×v; v' = (w t + u×t) + v`, then adds the translation `τ`. For the exact evaluation
-//! of that formula with a non-unit `q`, `|q|² = 1 + η`, the result is `R v + η (R v - v)` where
-//! `R` is the rotation of `q/|q|`, so it differs from the rigid motion `M v = R v + τ` by at
-//! most `2|η||v|`. The `f64` evaluation adds, per component, at most a few units of roundoff
-//! `u = 2⁻⁵³` times `|v|` (two products and a difference for `t`, the same for `u×t`, one
-//! product and two sums) and one rounding of `|v'| + |τ|` for the translation: with
-//! `|u|, |w| <= 1`, the error vector is below `≈ 35u|v| + 2u|τ|`. We use the generous
-//! `ε = (2|η| + 1e-14)|v|max + 1e-15|τ| + 1e-290` (`1e-14 ≈ 90u`; the last term covers
-//! underflow), where `|v|max` is the solid's largest vertex norm (sphere centres lie inside
-//! the solid, so they obey the same bound). Every transformed vertex and centre is within `ε`
-//! of its image under `M`.
-//!
-//! * **Outer spheres** are used with radius `r + 2ε`: every point of a transformed triangle is
-//!   within `ε` of the `M`-image of the corresponding point of the body-frame triangle, and
-//!   the centre is within `ε` of its image: so a surface contact point lies in the inflated
-//!   outer spheres of every node on its path, and rejection never loses a contact.
-//! * **Inner spheres** (and the outer spheres of internal nodes) are used with radius
-//!   `r - 3ε`: that ball is within the `M`-image of a ball at distance `>= ε` from the solid's
-//!   boundary, and since the transformed surface is an `ε`-perturbation of the `M`-image
-//!   surface (a homotopy moving no point by more than `ε` never crosses the ball), the ball
-//!   lies inside the transformed solid. Two such balls meeting proves that the solids meet.
-//! * **Sphere comparisons** compute `d² = |c₁ - c₂|²` and `s² = (r₁ + r₂)²` in `f64`; both
-//!   have relative errors below `8u`, so "disjoint" is decided only when
-//!   `d² > s² (1 + 1e-14) + 1e-300` and "meet" only when `d² (1 + 1e-14) + 1e-300 < s²`.
-//!   Anything uncertain falls through to the next test (finally to the exact faces).
-//!
-//! # Containment
-//! Algorithm 1 finds surface contacts. When none is found and the outer root spheres met, one
-//! solid may still lie inside the other: a vertex of A is tested against B (and a vertex of B
-//! against A). The vertex is mapped back to the other's body frame and compared with its
-//! triangle planes: beyond a margin that covers `ε` and the inverse transform's rounding the
-//! answer is certain; otherwise the exact even–odd count of the crossings of a segment from
-//! the point to far outside, with exact `orient3d` signs, decides (a direction giving a zero
-//! sign is replaced by another one).
+//! The collision test between two [`DoubleSphereTree`]s under rigid motions (the paper's
+//! Algorithm 1 and 2, plus an exact containment test): [`DoubleSphereTree::collides_at`], whose
+//! docs hold the rounding analysis.
 
 use nalgebra::{Isometry3, Point3};
 
@@ -53,7 +8,7 @@ use super::DoubleSphereTree;
 use crate::query::containment::point_in_solid;
 use crate::{Intersects, Triangle};
 
-/// How [`collide`] reached its answer.
+/// How [`DoubleSphereTree::collides_at`] reached its answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Decision {
     /// No collision: every pair of nodes visited was rejected by the outer spheres (or by our
@@ -73,7 +28,7 @@ pub enum Decision {
     NoContact,
 }
 
-/// The answer of [`collide`] with how it was reached.
+/// The answer of [`DoubleSphereTree::collides_at`] with how it was reached.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Outcome {
     /// Whether the two solids share a point (exact; touching counts).
@@ -132,7 +87,7 @@ impl Cache {
 
 /// Reusable buffers for [`collide_with`], so that a query does not allocate.
 #[derive(Debug, Clone, Default)]
-pub struct Scratch {
+pub(crate) struct Scratch {
     stamp: u32,
     a: Cache,
     b: Cache,
@@ -152,7 +107,7 @@ struct Gathered {
 
 impl Scratch {
     /// Empty buffers (they grow on first use).
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self::default()
     }
 }
@@ -162,8 +117,9 @@ fn arr(p: &Point3<f64>) -> [f64; 3] {
     [p.x, p.y, p.z]
 }
 
-/// The rounding bound `ε` of the module docs for a pose and a largest vertex norm.
-pub fn transform_error_bound(pose: &Isometry3<f64>, vmax: f64) -> f64 {
+/// The rounding bound `ε` of [`DoubleSphereTree::collides_at`]'s docs for a pose and a largest
+/// vertex norm.
+pub(crate) fn transform_error_bound(pose: &Isometry3<f64>, vmax: f64) -> f64 {
     let q = pose.rotation.quaternion();
     let eta = (q.norm_squared() - 1.0).abs() + 1e-15;
     let tau = pose.translation.vector.norm() * 1.01;
@@ -251,24 +207,104 @@ thread_local! {
     static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::new());
 }
 
-/// Whether the two solids collide (see the module docs). Uses a per-thread [`Scratch`], so
-/// repeated queries do not allocate; [`collide_with`] takes explicit buffers.
-pub fn collide(
-    a: &DoubleSphereTree,
-    pose_a: &Isometry3<f64>,
-    b: &DoubleSphereTree,
-    pose_b: &Isometry3<f64>,
-) -> Outcome {
-    SCRATCH.with(|s| match s.try_borrow_mut() {
-        Ok(mut scratch) => collide_with(&mut scratch, a, pose_a, b, pose_b),
-        // Re-entered on this thread (not possible through this module): fresh buffers.
-        Err(_) => collide_with(&mut Scratch::new(), a, pose_a, b, pose_b),
-    })
+impl DoubleSphereTree {
+    /// Whether this solid at `pose` and `other` at `other_pose` share a point (exact; touching
+    /// counts), with how the answer was reached ([`Outcome`]). Uses per-thread buffers, so
+    /// repeated queries do not allocate once the trees' sizes have been seen.
+    ///
+    /// ```
+    /// use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
+    /// use cga_collide::nalgebra::Isometry3;
+    /// use cga_collide::shape::polyhedron::ConvexPolyhedron;
+    /// let cube = DoubleSphereTree::build(&ConvexPolyhedron::cube(), 3, InnerSphereKind::Chebyshev)?;
+    /// let here = Isometry3::identity();
+    /// assert!(cube.collides_at(&here, &cube, &Isometry3::translation(0.5, 0.0, 0.0)).collides);
+    /// assert!(!cube.collides_at(&here, &cube, &Isometry3::translation(5.0, 0.0, 0.0)).collides);
+    /// # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+    /// ```
+    ///
+    /// The test is the paper's Algorithm 1 (outer spheres reject, labels and inner spheres accept, leaves go to
+    /// Algorithm 2's exact face tests), plus an exact containment test.
+    ///
+    /// # What "exact" means here
+    /// The ground truth is the pair of closed solids bounded by the triangles of
+    /// [`ConvexPolyhedron::triangles`](crate::shape::polyhedron::ConvexPolyhedron::triangles) with vertices
+    /// `pose * v` computed in `f64` by nalgebra (as
+    /// [`TriMesh::transformed`](crate::shape::mesh::TriMesh::transformed) does); touching counts. The face
+    /// tests run on exactly those triangles with the exact [`Triangle`] test. The spheres are
+    /// stored in the body frame and their centres are transformed in `f64` at query time, so the
+    /// sphere tests are made conservative:
+    ///
+    /// **The rounding bound.** nalgebra rotates `v` by the quaternion `q = (w, u)` as
+    /// `t = 2 u×v; v' = (w t + u×t) + v`, then adds the translation `τ`. For the exact evaluation
+    /// of that formula with a non-unit `q`, `|q|² = 1 + η`, the result is `R v + η (R v - v)` where
+    /// `R` is the rotation of `q/|q|`, so it differs from the rigid motion `M v = R v + τ` by at
+    /// most `2|η||v|`. The `f64` evaluation adds, per component, at most a few units of roundoff
+    /// `u = 2⁻⁵³` times `|v|` (two products and a difference for `t`, the same for `u×t`, one
+    /// product and two sums) and one rounding of `|v'| + |τ|` for the translation: with
+    /// `|u|, |w| <= 1`, the error vector is below `≈ 35u|v| + 2u|τ|`. We use the generous
+    /// `ε = (2|η| + 1e-14)|v|max + 1e-15|τ| + 1e-290` (`1e-14 ≈ 90u`; the last term covers
+    /// underflow), where `|v|max` is the solid's largest vertex norm (sphere centres lie inside
+    /// the solid, so they obey the same bound). Every transformed vertex and centre is within `ε`
+    /// of its image under `M`.
+    ///
+    /// * **Outer spheres** are used with radius `r + 2ε`: every point of a transformed triangle is
+    ///   within `ε` of the `M`-image of the corresponding point of the body-frame triangle, and
+    ///   the centre is within `ε` of its image: so a surface contact point lies in the inflated
+    ///   outer spheres of every node on its path, and rejection never loses a contact.
+    /// * **Inner spheres** (and the outer spheres of internal nodes) are used with radius
+    ///   `r - 3ε`: that ball is within the `M`-image of a ball at distance `>= ε` from the solid's
+    ///   boundary, and since the transformed surface is an `ε`-perturbation of the `M`-image
+    ///   surface (a homotopy moving no point by more than `ε` never crosses the ball), the ball
+    ///   lies inside the transformed solid. Two such balls meeting proves that the solids meet.
+    /// * **Sphere comparisons** compute `d² = |c₁ - c₂|²` and `s² = (r₁ + r₂)²` in `f64`; both
+    ///   have relative errors below `8u`, so "disjoint" is decided only when
+    ///   `d² > s² (1 + 1e-14) + 1e-300` and "meet" only when `d² (1 + 1e-14) + 1e-300 < s²`.
+    ///   Anything uncertain falls through to the next test (finally to the exact faces).
+    ///
+    /// # Containment
+    /// Algorithm 1 finds surface contacts. When none is found and the outer root spheres met, one
+    /// solid may still lie inside the other: a vertex of A is tested against B (and a vertex of B
+    /// against A). The vertex is mapped back to the other's body frame and compared with its
+    /// triangle planes: beyond a margin that covers `ε` and the inverse transform's rounding the
+    /// answer is certain; otherwise the exact even–odd count of the crossings of a segment from
+    /// the point to far outside, with exact `orient3d` signs, decides (a direction giving a zero
+    /// sign is replaced by another one).
+    pub fn collides_at(
+        &self,
+        pose: &Isometry3<f64>,
+        other: &DoubleSphereTree,
+        other_pose: &Isometry3<f64>,
+    ) -> Outcome {
+        SCRATCH.with(|s| match s.try_borrow_mut() {
+            Ok(mut scratch) => collide_with(&mut scratch, self, pose, other, other_pose),
+            // Re-entered on this thread (not possible through this module): fresh buffers.
+            Err(_) => collide_with(&mut Scratch::new(), self, pose, other, other_pose),
+        })
+    }
+
+    /// [`collides_at`](Self::collides_at) with both solids where they were built (the identity
+    /// pose for both).
+    ///
+    /// ```
+    /// use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSphereKind};
+    /// use cga_collide::shape::polyhedron::ConvexPolyhedron;
+    /// let a = DoubleSphereTree::build(&ConvexPolyhedron::octahedron(), 3, InnerSphereKind::Centroid)?;
+    /// let b = DoubleSphereTree::build(&ConvexPolyhedron::diamond(), 3, InnerSphereKind::Centroid)?;
+    /// let out = a.collides(&b); // both centred at the origin
+    /// assert!(out.collides);
+    /// assert_eq!(out.decided_by, Decision::InnerSpheres);
+    /// # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+    /// ```
+    pub fn collides(&self, other: &DoubleSphereTree) -> Outcome {
+        let id = Isometry3::identity();
+        self.collides_at(&id, other, &id)
+    }
 }
 
-/// [`collide`] with reusable buffers: after the first query with trees of a given size, no
-/// heap allocation happens.
-pub fn collide_with(
+/// [`DoubleSphereTree::collides_at`] with explicit buffers: after the first query with trees of
+/// a given size, no heap allocation happens.
+pub(crate) fn collide_with(
     scratch: &mut Scratch,
     a: &DoubleSphereTree,
     pose_a: &Isometry3<f64>,
@@ -469,7 +505,8 @@ fn gather(side: &mut Side, i: usize, c: &[f64; 3], r: f64, buf: &mut Vec<u32>) {
     }
 }
 
-/// The inverse-transform rounding bound for a world point `p` (module docs: `|p| + |τ|` in
+/// The inverse-transform rounding bound for a world point `p` (the rounding analysis of
+/// [`DoubleSphereTree::collides_at`]: `|p| + |τ|` in
 /// the role of `|v|`).
 fn inverse_error_bound(pose: &Isometry3<f64>, p: &Point3<f64>) -> f64 {
     let q = pose.rotation.quaternion();
@@ -553,7 +590,8 @@ fn leaf_faces(
     false
 }
 
-/// Whether the world point `p` lies in the closed solid of `side` (exact; see the module docs).
+/// Whether the world point `p` lies in the closed solid of `side` (exact; see
+/// [`DoubleSphereTree::collides_at`]).
 fn contains_point(side: &mut Side, p: &[f64; 3]) -> bool {
     let pw = Point3::new(p[0], p[1], p[2]);
     let body = side.pose.inverse_transform_point(&pw);

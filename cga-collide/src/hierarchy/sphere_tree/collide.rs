@@ -1,9 +1,11 @@
-//! Collision between two [`SphereTree`]s: the paper's method and a simultaneous descent.
+//! Collision between two [`SphereTree`]s: the simultaneous descent behind
+//! [`SphereTree::collides`], and the paper's method with the references the tests and the
+//! experiments compare it with (re-exported under `cga_collide::testing::sphere_tree`).
 //!
 //! Two trees collide when a leaf ball of one meets a leaf ball of the other (closed balls:
 //! touching counts, as the paper's `sumaRadio >= distancia`). Every ball–ball test is exact
-//! ([`crate::exact::balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact fall-back),
-//! where the seed computes `sqrt` in `float`.
+//! ([`crate::exact::balls_meet`]: the conformal `BallBall` predicate, certified `f64` with exact
+//! fall-back), where the paper's C++ computes `sqrt` in `float`.
 //!
 //! # The paper's method (§3.1, `Colision_Arbol` / `Colision_Esfera_Arbol` /
 //! `Colision_Real`)
@@ -15,13 +17,14 @@
 //! The C++ of `Colision_Real` returns the answer of the **first** child that meets the leaf
 //! (`return m_lstEsferas[i]->Colision_Real(o_esf);`), so it follows a single path down Y and
 //! misses a collision that lies under a later child whenever an earlier child's ball meets the
-//! leaf but none of that child's leaves do. [`paper_method_as_published`] keeps that quirk (it can answer
-//! "no collision" for colliding trees: see the test `paper_method_as_published_misses_a_collision`);
-//! [`paper_method`] is the same code with that one line fixed (a child that does not lead to a leaf
-//! hit lets the loop go on), which is what the paper's prose (step 3: compare each element of
-//! `L` against tree Y *until* a leaf of Y meets it) describes. Both keep the C++'s other
-//! quirk: a leaf of X is tested against Y's root twice (once as a child in its parent's loop,
-//! once as a leaf), which only shows in the test counts.
+//! leaf but none of that child's leaves do. [`paper_method_as_published`] keeps that quirk (it
+//! can answer "no collision" for colliding trees: see the test
+//! `paper_method_as_published_misses_a_collision`); [`paper_method`] is the same code with that
+//! one line fixed (a child that does not lead to a leaf hit lets the loop go on), which is what
+//! the paper's prose (step 3: compare each element of `L` against tree Y *until* a leaf of Y
+//! meets it) describes. Both keep the C++'s other quirk: a leaf of X is tested against Y's
+//! root twice (once as a child in its parent's loop, once as a leaf), which only shows in the
+//! test counts.
 //!
 //! # Simultaneous descent ([`simultaneous`])
 //! Depth-first over pairs of nodes: a pair whose balls do not meet is dropped; a pair of
@@ -31,20 +34,16 @@
 //! # When they agree
 //! When every child ball lies inside its parent ball (true of every tree [`octree::build`]
 //! makes; [`SphereTree::nesting_violations`] checks it), a pair of meeting leaves implies that
-//! all their ancestors meet, so [`paper_method`], [`simultaneous`] and [`brute_force`] (every leaf
-//! pair) give the same answer; the tests check it on random trees. On trees that are not
+//! all their ancestors meet, so [`paper_method`], [`simultaneous`] and [`brute_force`] (every
+//! leaf pair) give the same answer; the tests check it on random trees. On trees that are not
 //! nested they may differ (pruning by a parent that does not contain its child).
 //!
 //! [`octree::build`]: super::octree::build
-//!
-//! ```
-//! use cga_collide::hierarchy::sphere_tree::{collide, CellState, SphereTree};
-//! let a = SphereTree::single([0.0, 0.0, 0.0], 1.0, CellState::Full)?;
-//! let b = SphereTree::single([2.0, 0.0, 0.0], 1.0, CellState::Full)?; // touching
-//! assert!(collide::paper_method(&a, &b).collides);
-//! assert!(collide::simultaneous(&a, &b).collides);
-//! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
-//! ```
+
+// The paper's methods and the brute force are only reached through `testing`.
+#![cfg_attr(not(any(test, feature = "testing")), allow(dead_code))]
+
+use nalgebra::Isometry3;
 
 use super::{SphereTree, SphereTreeNode};
 use crate::exact::balls_meet;
@@ -258,5 +257,50 @@ pub fn brute_force(x: &SphereTree, y: &SphereTree) -> CollisionResult {
         sphere_tests: tests.0,
         witness,
         listed_leaves: 0,
+    }
+}
+
+impl SphereTree {
+    /// Whether a leaf ball of this tree meets a leaf ball of `other` (closed balls: touching
+    /// counts; every ball–ball test exact), by a simultaneous depth-first descent over pairs of
+    /// nodes that splits the larger ball first, with a meeting leaf pair as witness and the
+    /// number of ball tests made. Both trees in the same frame; on nested trees (every child
+    /// ball inside its parent, as [`octree::build`](super::octree::build) makes them) the
+    /// answer is that of testing every leaf pair.
+    ///
+    /// ```
+    /// use cga_collide::hierarchy::sphere_tree::{CellState, SphereTree};
+    /// let a = SphereTree::single([0.0, 0.0, 0.0], 1.0, CellState::Full)?;
+    /// let b = SphereTree::single([2.0, 0.0, 0.0], 1.0, CellState::Full)?; // touching
+    /// let c = SphereTree::single([2.0 + 1e-15, 0.0, 0.0], 1.0, CellState::Full)?;
+    /// assert!(a.collides(&b).collides);
+    /// assert_eq!(a.collides(&b).witness, Some((0, 0)));
+    /// assert!(!a.collides(&c).collides);
+    /// # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+    /// ```
+    pub fn collides(&self, other: &SphereTree) -> CollisionResult {
+        simultaneous(self, other)
+    }
+
+    /// [`collides`](Self::collides) with this tree moved by `pose` and `other` by
+    /// `other_pose`: both trees are [`transformed`](Self::transformed) (a new tree each, with
+    /// the radii raised by its rounding margin) and then tested.
+    ///
+    /// ```
+    /// use cga_collide::hierarchy::sphere_tree::{CellState, SphereTree};
+    /// use cga_collide::nalgebra::Isometry3;
+    /// let a = SphereTree::single([0.0, 0.0, 0.0], 1.0, CellState::Full)?;
+    /// let here = Isometry3::identity();
+    /// assert!(a.collides_at(&here, &a, &Isometry3::translation(1.5, 0.0, 0.0)).collides);
+    /// assert!(!a.collides_at(&here, &a, &Isometry3::translation(2.5, 0.0, 0.0)).collides);
+    /// # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+    /// ```
+    pub fn collides_at(
+        &self,
+        pose: &Isometry3<f64>,
+        other: &SphereTree,
+        other_pose: &Isometry3<f64>,
+    ) -> CollisionResult {
+        simultaneous(&self.transformed(pose), &other.transformed(other_pose))
     }
 }

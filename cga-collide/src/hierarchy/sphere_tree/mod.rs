@@ -4,9 +4,11 @@
 //! * [`SphereTree`]: the 8-ary tree itself (this module), stored flat in breadth-first order;
 //!   [`NestedNode`] is the recursive form used to build one by hand or from a file.
 //! * [`octree`]: building a tree from a closed [`TriMesh`](crate::shape::mesh::TriMesh), cells
-//!   classified full / partial / empty exactly ([`tribox`] is the exact triangle–box test).
-//! * [`collide`]: the paper's collision method (as written, and with its one defect fixed) and a
-//!   simultaneous descent; every sphere–sphere test is exact.
+//!   classified full / partial / empty exactly (by an exact triangle–box test).
+//! * [`SphereTree::collides`] / [`SphereTree::collides_at`]: collision of two trees by a
+//!   simultaneous descent; every sphere–sphere test is exact. (The paper's own method, as
+//!   published and with its one defect fixed, is kept for the experiments that compare them,
+//!   under the `testing` feature.)
 //! * [`format`](mod@format): the paper's text format (its annex), reader and writer.
 //!
 //! ```
@@ -24,10 +26,12 @@
 //! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
 //! ```
 
-pub mod collide;
+pub(crate) mod collide;
 pub mod format;
 pub mod octree;
-pub mod tribox;
+pub(crate) mod tribox;
+
+pub use collide::CollisionResult;
 
 use std::collections::VecDeque;
 use std::ops::Range;
@@ -184,9 +188,9 @@ pub struct NestingViolation {
 /// tree's shape and contents), so two trees are equal exactly when they have the same nodes in
 /// the same order.
 ///
-/// The collision algorithms of [`collide`] treat the union of the leaf balls as the object;
-/// they are exact (and the paper's method and the simultaneous descent agree) when every child
-/// ball lies inside its parent ball, which [`octree::build`] guarantees and
+/// The collision test ([`collides`](Self::collides)) treats the union of the leaf balls as the
+/// object; it is exact (and agrees with the paper's method and with every leaf pair) when every
+/// child ball lies inside its parent ball, which [`octree::build`] guarantees and
 /// [`nesting_violations`](Self::nesting_violations) checks.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SphereTree {

@@ -12,8 +12,8 @@
 //!
 //! # Cells, exactly
 //! A cell (closed box) is
-//! * **partial** when a triangle of the mesh meets it ([`triangle_meets_box`], exact;
-//!   candidates from the mesh's [`Bvh`](crate::bounding::Bvh));
+//! * **partial** when a triangle of the mesh meets it (an exact separating-axis triangle–box
+//!   test whose signs are certified `f64` with exact fall-back; candidates from the mesh's [`Bvh`](crate::bounding::Bvh));
 //! * otherwise wholly inside or wholly outside the solid (the cell is connected and no surface
 //!   crosses it), decided by [`Collider::contains_point`] at its centre (exact): **full** or
 //!   **empty**.
@@ -247,7 +247,7 @@ fn classify(
             |nb| nb.overlaps(b),
             |t| {
                 work.tri_tests += 1;
-                let [p, q, r] = mesh.corners(t);
+                let [p, q, r] = mesh.corners(t as u32);
                 let tri = [[p.x, p.y, p.z], [q.x, q.y, q.z], [r.x, r.y, r.z]];
                 if triangle_meets_box(&tri, &b.min, &b.max) {
                     ControlFlow::Break(())
@@ -382,13 +382,9 @@ pub fn build(
     Ok((SphereTree::from_raw(nodes), report))
 }
 
-/// The radius used for every cell of a level by [`build`] (exposed for tests).
-pub fn level_radius(root_radius: f64, level: u32) -> f64 {
-    root_radius / 2f64.powi(level as i32)
-}
-
 /// Whether a ball `(c, r)` contains the closed box `b` (all eight corners), exactly.
-pub fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
+#[cfg(any(test, feature = "testing"))]
+pub(crate) fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
     (0..8).all(|m| {
         let p = [
             if m & 1 == 0 { b.min[0] } else { b.max[0] },
@@ -401,7 +397,8 @@ pub fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
 
 /// The closed box of a tree node built by [`build`] from its centre and the root's side:
 /// `centre ± side / 2^(level+1)` (exact for the builder's grid).
-pub fn cell_of(centre: &[f64; 3], side: f64, level: u32) -> Aabb {
+#[cfg(any(test, feature = "testing"))]
+pub(crate) fn cell_of(centre: &[f64; 3], side: f64, level: u32) -> Aabb {
     let h = side / 2f64.powi(level as i32 + 1);
     Aabb {
         min: core::array::from_fn(|a| centre[a] - h),

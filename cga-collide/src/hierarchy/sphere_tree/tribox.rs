@@ -16,7 +16,7 @@
 //! Touching counts as overlap (a triangle in a face of the cell meets the cell).
 //!
 //! ```
-//! use cga_collide::hierarchy::sphere_tree::tribox::triangle_meets_box;
+//! use cga_collide::testing::sphere_tree::triangle_meets_box;
 //! let t = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
 //! assert!(triangle_meets_box(&t, &[0.5, 0.5, -1.0], &[1.0, 1.0, 1.0]));
 //! assert!(triangle_meets_box(&t, &[1.0, 1.0, 0.0], &[2.0, 2.0, 1.0])); // touches at (1, 1, 0)

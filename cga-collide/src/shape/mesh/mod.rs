@@ -1,5 +1,5 @@
 //! Triangle meshes: the [`TriMesh`] type, loaders for OBJ, OFF, PLY and STL, the built-in
-//! fixture meshes and midpoint subdivision.
+//! fixture meshes (feature `builtin-meshes`) and midpoint subdivision.
 //!
 //! # Coordinates and exactness
 //! A mesh is a list of `f64` vertices and a list of index triples. Degenerate triangles
@@ -17,6 +17,7 @@
 //! # Ok::<(), cga_collide::Error>(())
 //! ```
 
+#[cfg(feature = "builtin-meshes")]
 mod builtin;
 mod obj;
 mod off;
