@@ -14,8 +14,9 @@ const LAYERS: &[&str] = &[
     "exact",
     "shape",
     "conformal",
-    "bvh",
     "query",
+    "bounding",
+    "collider",
     "hierarchy",
     "gpu",
     "testing",
@@ -24,6 +25,7 @@ const LAYERS: &[&str] = &[
 /// Crate-root re-exports and the layer they come from.
 const ROOT_REEXPORTS: &[(&str, &str)] = &[
     ("Error", "error"),
+    ("Collider", "collider"),
     ("Intersects", "query"),
     ("IntersectsWith", "query"),
     ("mesh", "shape"),
@@ -140,10 +142,10 @@ fn top_modules_use_only_lower_layers() {
 
 #[test]
 fn crate_paths_reads_single_and_grouped_uses() {
-    assert_eq!(crate_paths("use crate::collider::Collider;"), ["query"]);
+    assert_eq!(crate_paths("use crate::collider::Collider;"), ["collider"]);
     assert_eq!(
-        crate_paths("use crate::{Ball, bvh::Aabb};"),
-        ["Ball".to_string(), "bvh".to_string()]
+        crate_paths("use crate::{Ball, bounding::Aabb};"),
+        ["Ball".to_string(), "bounding".to_string()]
     );
     assert!(crate_paths("use super::x;").is_empty());
 }
