@@ -82,7 +82,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
             },
             other => Error::Syntax {
                 at,
-                message: format!("OBJ: {other}"),
+                message: obj_message(&other),
             },
         }
     })?;
@@ -120,4 +120,26 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
         }
     }
     Ok((vertices, triangles))
+}
+
+/// What went wrong, in words a user can act on (tobj's own messages are terse: "read error").
+fn obj_message(e: &tobj::LoadError) -> String {
+    use tobj::LoadError as E;
+    match e {
+        E::ReadError => "not OBJ text: this line could not be read as UTF-8 text \
+            (a binary or corrupted file, or another format with an .obj name?)"
+            .into(),
+        E::UnrecognizedCharacter => "unrecognised character in an OBJ statement".into(),
+        E::NormalParseError => "bad vertex normal (`vn` needs three numbers)".into(),
+        E::TexcoordParseError => "bad texture coordinate (`vt` needs two or three numbers)".into(),
+        E::FaceParseError => {
+            "bad face (`f` needs three or more vertex indices, like `f 1 2 3` or `f 1/1 2/2 3/3`)"
+                .into()
+        }
+        E::InvalidPolygon => "a face with fewer than three vertices".into(),
+        E::FaceTexCoordOutOfBounds | E::FaceNormalOutOfBounds | E::FaceColorOutOfBounds => {
+            "face refers to a texture coordinate, normal or colour that does not exist".into()
+        }
+        other => format!("OBJ statement could not be read ({other})"),
+    }
 }
