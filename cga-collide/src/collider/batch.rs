@@ -18,28 +18,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use nalgebra::Isometry3;
-
-use crate::collider::Collider;
+use crate::collider::{Collider, PosePair};
 use crate::error::Error;
 use crate::parallel::*;
 use crate::query::CertifiedDistance;
-
-/// The poses of the two meshes of one query.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PosePair {
-    /// Pose of the first mesh (`self` of the query).
-    pub a: Isometry3<f64>,
-    /// Pose of the second mesh.
-    pub b: Isometry3<f64>,
-}
-
-impl PosePair {
-    /// The pair of poses.
-    pub fn new(a: Isometry3<f64>, b: Isometry3<f64>) -> PosePair {
-        PosePair { a, b }
-    }
-}
 
 /// Answers `query` for every pose pair, spread over the cores; the first refused pose (in
 /// slice order) is reported with its index.

@@ -58,10 +58,11 @@ mod distance;
 mod hits;
 mod nearest;
 mod pairs;
+mod pose;
 pub(crate) mod poses;
 mod self_intersection;
 
-pub use batch::PosePair;
+pub use pose::{pose_from_degrees, PosePair};
 pub use contacts::Contact;
 
 use nalgebra::{Isometry3, Point3};
