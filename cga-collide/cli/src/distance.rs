@@ -3,28 +3,22 @@
 
 use std::time::Instant;
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use cga_collide::query::{self, Collider};
 use clap::Args;
 use serde_json::json;
 
-use crate::{load_mesh, parse_triple, placement};
+use crate::args::TwoMeshes;
+use crate::placement::PoseArgs;
 
+/// Minimum distance between two meshes, with witnesses and a certified error bound.
 #[derive(Args, Debug)]
-pub(crate) struct DistanceArgs {
-    /// Mesh A: a file (.obj, .off, .ply, .stl) or a built-in name (bunny, bunny00, armadillo).
-    a: String,
-    /// Mesh B (moved by --rotate and --translate).
-    b: String,
-    /// Scale each mesh uniformly into the unit box centred at the origin first.
-    #[arg(long)]
-    unit: bool,
-    /// Rotate B by these degrees about x, then y, then z.
-    #[arg(long, value_name = "AX,AY,AZ", value_parser = parse_triple, allow_hyphen_values = true)]
-    rotate: Option<[f64; 3]>,
-    /// Then translate B.
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
-    translate: Option<[f64; 3]>,
+#[command(mut_arg("a", |a| a.required(true)), mut_arg("b", |b| b.required(true)))]
+pub struct DistanceArgs {
+    #[command(flatten)]
+    meshes: TwoMeshes,
+    #[command(flatten)]
+    pose: PoseArgs,
     /// Also compute the squared distance exactly (rationals) and print it.
     #[arg(long)]
     exact: bool,
@@ -33,36 +27,47 @@ pub(crate) struct DistanceArgs {
     json: bool,
 }
 
-pub(crate) fn run(args: DistanceArgs) -> Result<()> {
-    let mut a = load_mesh(&args.a)?;
-    let mut b = load_mesh(&args.b)?;
-    if args.unit {
-        a = a.unit();
-        b = b.unit();
-    }
-    let b = b
-        .transformed(&placement(args.rotate, args.translate))
-        .context("placing mesh B")?;
+/// Runs `cga distance`.
+pub fn run(args: DistanceArgs) -> Result<()> {
+    let (a_spec, b_spec) = args.meshes.both()?;
+    let (a, b) = args.meshes.load()?;
+    let b = b.transformed(&args.pose.isometry()).with_context(|| {
+        format!("placing mesh B (`{b_spec}`) with --rotate and --translate (give smaller values)")
+    })?;
     let (ca, cb) = (Collider::new(a), Collider::new(b));
     let start = Instant::now();
     let d = query::mesh_distance(&ca, &cb).context("a mesh has no triangles")?;
     let millis = start.elapsed().as_secs_f64() * 1e3;
+    let w = |p: &cga_collide::nalgebra::Point3<f64>| [p.x, p.y, p.z];
+    let (wa, wb) = (w(&d.witness_a), w(&d.witness_b));
+    // Never print a non-finite number as certified.
+    let finite = d.distance.is_finite()
+        && d.error_bound.is_finite()
+        && wa.iter().chain(&wb).all(|c| c.is_finite());
+    if !finite {
+        bail!(
+            "the coordinates of {a_spec} and {b_spec} are out of the range where the distance \
+             can be certified (the computation overflowed: distance {}, error bound {}); scale \
+             the meshes down (e.g. with --unit) or move them closer to the origin",
+            d.distance,
+            d.error_bound
+        );
+    }
     let exact = args
         .exact
         .then(|| query::exact_mesh_distance(&ca, &cb))
         .flatten();
     let (i, j) = d.triangles.unwrap_or((0, 0));
-    let w = |p: &cga_collide::nalgebra::Point3<f64>| [p.x, p.y, p.z];
     if args.json {
         let mut value = json!({
             "distance": d.distance,
             "error_bound": d.error_bound,
-            "witness_a": w(&d.witness_a),
-            "witness_b": w(&d.witness_b),
-            "triangles": [i, j],
+            "witness_a": wa,
+            "witness_b": wb,
+            "witness_triangles": [i, j],
             "millis": millis,
-            "a": args.a,
-            "b": args.b,
+            "a": a_spec,
+            "b": b_spec,
         });
         if let Some(e) = &exact {
             value["exact_distance2"] = json!(e.distance2.to_string());
@@ -70,14 +75,11 @@ pub(crate) fn run(args: DistanceArgs) -> Result<()> {
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
         println!(
-            "distance {} ± {:.3e} (certified) between triangle {i} of {} and {j} of {} ({millis:.3} ms)",
-            d.distance, d.error_bound, args.a, args.b
+            "distance {} ± {:.3e} (certified) between triangle {i} of {a_spec} and {j} of \
+             {b_spec} ({millis:.3} ms)",
+            d.distance, d.error_bound
         );
-        println!(
-            "witness A {:?}\nwitness B {:?}",
-            w(&d.witness_a),
-            w(&d.witness_b)
-        );
+        println!("witness A {wa:?}\nwitness B {wb:?}");
         if let Some(e) = &exact {
             println!("exact squared distance {}", e.distance2);
         }

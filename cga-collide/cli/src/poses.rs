@@ -4,7 +4,9 @@
 //!
 //! Each non-empty line of the file is `ax ay az tx ty tz` (whitespace- or comma-separated,
 //! `#` starts a comment): B is rotated by `ax`, `ay`, `az` degrees about x, then y, then z, then
-//! translated, exactly as `--rotate ax,ay,az --translate tx,ty,tz` does.
+//! translated, exactly as `--rotate ax,ay,az --translate tx,ty,tz` does. Poses are numbered
+//! from 0 in the output (pose `k` is the `k`-th pose of the file, as pair indices are), and
+//! errors name the line of the file.
 
 use std::path::Path;
 use std::time::Instant;
@@ -14,6 +16,8 @@ use cga_collide::nalgebra::Isometry3;
 use cga_collide::query::{BatchError, Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
 use serde_json::json;
+
+use crate::placement::pose_from_degrees_xyz;
 
 /// What the pose run prints.
 pub struct Options<'a> {
@@ -59,7 +63,7 @@ pub fn parse(text: &str, name: &str) -> Result<Vec<(usize, Isometry3<f64>)>> {
         }
         poses.push((
             n + 1,
-            crate::placement(Some([v[0], v[1], v[2]]), Some([v[3], v[4], v[5]])),
+            pose_from_degrees_xyz([v[0], v[1], v[2]], [v[3], v[4], v[5]]),
         ));
     }
     if poses.is_empty() {
@@ -122,8 +126,8 @@ pub fn run(a: TriMesh, b: TriMesh, options: &Options<'_>) -> Result<()> {
     } else {
         for (k, c) in collides.iter().enumerate() {
             match &pairs {
-                Some(p) => println!("pose {}: collides {c}, {} intersecting pairs", k + 1, p[k]),
-                None => println!("pose {}: collides {c}", k + 1),
+                Some(p) => println!("pose {k}: collides {c}, {} intersecting pairs", p[k]),
+                None => println!("pose {k}: collides {c}"),
             }
         }
         println!(
@@ -149,14 +153,11 @@ mod tests {
         assert_eq!(poses.len(), 2);
         assert_eq!(
             poses[0],
-            (2, crate::placement(None, Some([0.3, 0.05, 0.0])))
+            (2, pose_from_degrees_xyz([0.0; 3], [0.3, 0.05, 0.0]))
         );
         assert_eq!(
             poses[1],
-            (
-                4,
-                crate::placement(Some([90.0, 0.0, 0.0]), Some([1.0, 2.0, 3.0]))
-            )
+            (4, pose_from_degrees_xyz([90.0, 0.0, 0.0], [1.0, 2.0, 3.0]))
         );
         let e = parse("1 2 3\n", "f").unwrap_err().to_string();
         assert!(e.contains("f:1") && e.contains("6 numbers"), "{e}");

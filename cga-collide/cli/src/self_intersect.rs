@@ -11,10 +11,12 @@ use cga_collide::query::{self, Collider};
 use clap::Args;
 use serde_json::json;
 
-use crate::load_mesh;
+use crate::mesh::load_mesh;
+use crate::output;
 
+/// Pairs of triangles of one mesh that meet other than in a shared vertex or edge (exact).
 #[derive(Args, Debug)]
-pub(crate) struct SelfIntersectArgs {
+pub struct SelfIntersectArgs {
     /// The mesh: a file (.obj, .off, .ply, .stl) or a built-in name (bunny, bunny00, armadillo).
     mesh: String,
     /// Write the pairs, one `i j` per line (0-based triangle indices, `i < j`).
@@ -25,8 +27,10 @@ pub(crate) struct SelfIntersectArgs {
     json: bool,
 }
 
-pub(crate) fn run(args: SelfIntersectArgs) -> Result<()> {
-    let mesh = load_mesh(&args.mesh)?;
+/// Runs `cga self-intersect`.
+pub fn run(args: SelfIntersectArgs) -> Result<()> {
+    output::check_opt("--pairs", args.pairs.as_deref(), None)?;
+    let mesh = load_mesh(&args.mesh, "")?;
     let start = Instant::now();
     let collider = Collider::new(mesh);
     let build = start.elapsed();
@@ -46,7 +50,7 @@ pub(crate) fn run(args: SelfIntersectArgs) -> Result<()> {
         let value = json!({
             "pairs": pairs.len(),
             "self_intersects": !pairs.is_empty(),
-            "triangles": collider.mesh().num_triangles(),
+            "triangle_count": collider.mesh().num_triangles(),
             "closed": collider.mesh().is_closed(),
             "build_millis": build.as_secs_f64() * 1e3,
             "millis": millis,

@@ -20,6 +20,10 @@ use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published}
 use clap::{Args, Subcommand, ValueEnum};
 use serde_json::json;
 
+use crate::mesh::load_unit;
+use crate::output;
+use crate::placement::PoseArgs;
+
 /// Octree sphere trees: build them from meshes, test two for collision.
 #[derive(Args, Debug)]
 pub struct SphereTreeArgs {
@@ -36,6 +40,12 @@ enum SphereTreeCommand {
 }
 
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("rotate", |a| a.help(
+        "Rotate every mesh after the first by these degrees about x, then y, then z"
+    )),
+    mut_arg("translate", |a| a.help("Then translate every mesh after the first"))
+)]
 struct BuildArgs {
     /// Meshes: files (.obj, .off, .ply, .stl, optionally .gz) or built-in names (bunny,
     /// bunny00, armadillo). Each must be closed.
@@ -50,12 +60,8 @@ struct BuildArgs {
     /// Scale each mesh into the unit box centred at the origin first.
     #[arg(long)]
     unit: bool,
-    /// Rotate every mesh after the first by these degrees about x, then y, then z.
-    #[arg(long, value_name = "AX,AY,AZ", value_parser = super::parse_triple, allow_hyphen_values = true)]
-    rotate: Option<[f64; 3]>,
-    /// Then translate every mesh after the first.
-    #[arg(long, value_name = "X,Y,Z", value_parser = super::parse_triple, allow_hyphen_values = true)]
-    translate: Option<[f64; 3]>,
+    #[command(flatten)]
+    pose: PoseArgs,
     /// Split full cells too (all leaves at the full depth).
     #[arg(long)]
     subdivide_full: bool,
@@ -105,18 +111,16 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
         subdivide_full: args.subdivide_full,
         ..BuildOptions::depth(args.depth)
     };
-    let iso = super::placement(args.rotate, args.translate);
+    output::check("--output", &args.output, None)?;
+    let iso = args.pose.isometry();
     let mut trees = Vec::new();
     let mut summary = Vec::new();
     for (k, spec) in args.meshes.iter().enumerate() {
-        let mut mesh = super::load_mesh(spec)?;
-        if args.unit {
-            mesh = mesh.unit();
-        }
+        let mut mesh = load_unit(spec, "", args.unit)?;
         if k > 0 {
-            mesh = mesh
-                .transformed(&iso)
-                .with_context(|| format!("placing mesh `{spec}`"))?;
+            mesh = mesh.transformed(&iso).with_context(|| {
+                format!("placing mesh `{spec}` with --rotate and --translate (give smaller values)")
+            })?;
         }
         let start = Instant::now();
         let collider = Collider::new(mesh);
@@ -125,7 +129,7 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
         let millis = start.elapsed().as_secs_f64() * 1e3;
         summary.push(json!({
             "mesh": spec,
-            "triangles": collider.mesh().num_triangles(),
+            "triangle_count": collider.mesh().num_triangles(),
             "nodes": tree.len(),
             "leaves": tree.leaf_count(),
             "bytes": tree.heap_bytes(),
@@ -149,7 +153,7 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
             println!(
                 "{}: {} triangles -> {} spheres ({} leaves), depth {}, {:.1} ms",
                 s["mesh"].as_str().unwrap_or("?"),
-                s["triangles"],
+                s["triangle_count"],
                 s["nodes"],
                 s["leaves"],
                 args.depth,

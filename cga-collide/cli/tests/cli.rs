@@ -29,7 +29,7 @@ fn collide_modes_agree_and_write_pairs_and_image() {
     assert_eq!(brute["mode"], "brute");
     assert_eq!(bvh["mode"], "bvh");
     assert_eq!(brute["pairs"], bvh["pairs"]);
-    assert_eq!(bvh["triangles"], serde_json::json!([3674, 3674]));
+    assert_eq!(bvh["triangle_counts"], serde_json::json!([3674, 3674]));
     assert!(bvh["collides"].as_bool().unwrap());
     assert!(bvh["pairs"].as_u64().unwrap() > 0);
     assert!(bvh["millis"].as_f64().unwrap() >= 0.0);

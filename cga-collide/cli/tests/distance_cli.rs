@@ -38,7 +38,7 @@ fn distance_between_cubes() {
     let e = v["error_bound"].as_f64().unwrap();
     assert!((d - 0.5).abs() <= e && e < 1e-12, "{v}");
     assert_eq!(v["exact_distance2"], "1/4");
-    assert_eq!(v["triangles"].as_array().unwrap().len(), 2);
+    assert_eq!(v["witness_triangles"].as_array().unwrap().len(), 2);
     let wa = &v["witness_a"];
     assert!((wa[0].as_f64().unwrap() - 1.0).abs() < 1e-12, "{v}");
     assert!(v["millis"].as_f64().unwrap() >= 0.0);
