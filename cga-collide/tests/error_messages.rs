@@ -215,7 +215,11 @@ fn gpu_errors_say_what_to_install_or_change() {
 
 #[test]
 fn binary_garbage_named_obj_says_it_is_not_obj_text() {
-    let e = TriMesh::from_bytes(b"garbage\n\xff\xfe\x00 binary\n", MeshFormat::Obj, "garbage.obj")
-        .expect_err("not an OBJ file");
+    let e = TriMesh::from_bytes(
+        b"garbage\n\xff\xfe\x00 binary\n",
+        MeshFormat::Obj,
+        "garbage.obj",
+    )
+    .expect_err("not an OBJ file");
     says(e, &["garbage.obj:", "not OBJ text", "UTF-8"]);
 }

@@ -4,8 +4,8 @@
 //! Run: `cargo run --release -p cga-cli --example adversarial_table`
 
 use cga_collide::exact::{ExactKernel, FloatKernel};
-use cga_collide::query::baseline;
 use cga_collide::testing::adversarial::{adversarial_set, Case};
+use cga_collide::testing::baseline;
 
 /// The seed and size of the fixed set.
 const SEED: u64 = 2026;

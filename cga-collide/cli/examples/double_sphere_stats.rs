@@ -10,9 +10,9 @@
 use std::collections::BTreeMap;
 
 use cga_cli::experiment::placement;
+use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::Point3;
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 fn main() {

@@ -9,10 +9,10 @@
 
 use std::time::{Duration, Instant};
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion};
-use cga_collide::query::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
 
@@ -89,10 +89,7 @@ fn main() {
     isos.extend((0..placements).map(|_| placement(&mut rng, 1.2)));
     let placed: Vec<Collider> = isos.iter().map(|iso| b.placed(iso).unwrap()).collect();
     let t = Instant::now();
-    let exact: Vec<bool> = placed
-        .iter()
-        .map(|pb| a.collides_solid(pb, Mode::Bvh))
-        .collect();
+    let exact: Vec<bool> = placed.iter().map(|pb| a.collides_solid(pb)).collect();
     let bvh_query = t.elapsed();
     let colliding = exact[1..].iter().filter(|&&e| e).count();
     println!(

@@ -2,7 +2,7 @@
 //! `cga collide` and `cga distance` (mesh A, mesh B, `--unit`).
 
 use anyhow::{bail, Result};
-use cga_collide::query::Mode;
+use cga_collide::collider::Mode;
 use cga_collide::shape::mesh::TriMesh;
 use clap::{Args, ValueEnum};
 

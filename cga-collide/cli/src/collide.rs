@@ -8,7 +8,8 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
-use cga_collide::query::{self, Collider, Mode};
+
+use cga_collide::collider::{Collider, Mode};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
@@ -171,13 +172,14 @@ pub fn run(args: CollideArgs) -> Result<()> {
     })?;
     bar.set_message("building hierarchies");
     let start = Instant::now();
-    let ca = Collider::new(a);
-    let cb = Collider::new(b);
+    // The mode is the colliders' own: every query below runs that way.
+    let mode: Mode = args.mode.into();
+    let ca = Collider::new(a).with_mode(mode);
+    let cb = Collider::new(b).with_mode(mode);
     let build = start.elapsed();
     bar.set_message("finding intersecting pairs");
-    let mode: Mode = args.mode.into();
     let found = match &gpu {
-        None => cpu_pairs(&ca, &cb, mode, args.clearance, args.repeat)?,
+        None => cpu_pairs(&ca, &cb, args.clearance, args.repeat)?,
         Some(gpu) => gpu_pairs(gpu, &ca, &cb, args.mode, args.repeat)?,
     };
     let collides = found.collides;
@@ -189,7 +191,7 @@ pub fn run(args: CollideArgs) -> Result<()> {
                 .mesh()
                 .vertices()
                 .first()
-                .is_some_and(|v| outer.contains_point(v, mode))
+                .is_some_and(|v| outer.contains_point(v))
     };
     let (a_inside_b, b_inside_a) = (inside(&ca, &cb), inside(&cb, &ca));
     if let Some(path) = &args.pairs {
@@ -197,13 +199,13 @@ pub fn run(args: CollideArgs) -> Result<()> {
         write_lines(path, found.pairs.iter().map(|(i, j)| format!("{i} {j}")))?;
     }
     // The contact class (exact for closed meshes).
-    let contact = (ca.mesh().is_closed() && cb.mesh().is_closed())
-        .then(|| query::contact_class(&ca, &cb).name());
+    let contact =
+        (ca.mesh().is_closed() && cb.mesh().is_closed()).then(|| ca.contact_class(&cb).name());
     // The exact intersection of every intersecting triangle pair, when a file or the image
     // needs it.
     let contacts = if collides && (args.contacts.is_some() || args.image.is_some()) {
         bar.set_message("intersecting");
-        query::contact_geometry(&ca, &cb)
+        ca.contacts(&cb)
     } else {
         Vec::new()
     };
@@ -274,20 +276,14 @@ struct Found {
     device_stats: Option<(u64, u64)>,
 }
 
-fn cpu_pairs(
-    ca: &Collider,
-    cb: &Collider,
-    mode: Mode,
-    clearance: Option<f64>,
-    repeat: u32,
-) -> Result<Found> {
+fn cpu_pairs(ca: &Collider, cb: &Collider, clearance: Option<f64>, repeat: u32) -> Result<Found> {
     let mut best = Duration::MAX;
     let mut pairs = Vec::new();
     for _ in 0..repeat {
         let t = Instant::now();
         pairs = match clearance {
-            Some(c) => query::mesh_pairs_within_distance(ca, cb, c),
-            None => ca.intersecting_pairs(cb, mode),
+            Some(c) => ca.pairs_within_distance(cb, c),
+            None => ca.intersecting_pairs(cb),
         };
         best = best.min(t.elapsed());
     }
@@ -295,11 +291,11 @@ fn cpu_pairs(
     let mut collides = false;
     for _ in 0..repeat {
         let t = Instant::now();
-        collides = ca.collides(cb, mode);
+        collides = ca.collides(cb);
         best_first = best_first.min(t.elapsed());
     }
     let touching = if clearance.is_some() {
-        !ca.intersecting_pairs(cb, mode).is_empty()
+        !ca.intersecting_pairs(cb).is_empty()
     } else {
         !pairs.is_empty()
     };

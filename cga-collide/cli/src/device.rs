@@ -7,7 +7,7 @@
 //! it.
 
 use anyhow::Result;
-use cga_collide::query::{Collider, Mode};
+use cga_collide::collider::Collider;
 use cga_collide::{Ball, Segment, Sphere, Triangle};
 use clap::ValueEnum;
 
@@ -47,12 +47,12 @@ impl Primitive {
     }
 
     /// The triangles of the collider's mesh it meets, sorted, on the CPU.
-    pub fn cpu_hits(&self, collider: &Collider, mode: Mode) -> Vec<u32> {
+    pub fn cpu_hits(&self, collider: &Collider) -> Vec<u32> {
         match self {
-            Primitive::Segment(s) => collider.segment_hits(s, mode),
-            Primitive::Triangle(t) => collider.triangle_hits(t, mode),
-            Primitive::Sphere(s) => collider.sphere_hits(s, mode),
-            Primitive::Ball(b) => collider.ball_hits(b, mode),
+            Primitive::Segment(s) => collider.segment_hits(s),
+            Primitive::Triangle(t) => collider.triangle_hits(t),
+            Primitive::Sphere(s) => collider.sphere_hits(s),
+            Primitive::Ball(b) => collider.ball_hits(b),
         }
     }
 }

@@ -4,7 +4,8 @@
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use cga_collide::query::{self, Collider};
+
+use cga_collide::collider::Collider;
 use clap::Args;
 use serde_json::json;
 
@@ -36,7 +37,15 @@ pub fn run(args: DistanceArgs) -> Result<()> {
     })?;
     let (ca, cb) = (Collider::new(a), Collider::new(b));
     let start = Instant::now();
-    let d = query::mesh_distance(&ca, &cb).context("a mesh has no triangles")?;
+    let d = match ca.distance(&cb) {
+        Ok(d) => d,
+        Err(e @ cga_collide::Error::OutOfRange { .. }) => bail!(
+            "the coordinates of {a_spec} and {b_spec} are out of the range where the distance \
+             can be certified ({e}); scale the meshes down (e.g. with --unit) or move them \
+             closer to the origin"
+        ),
+        Err(e) => return Err(e.into()),
+    };
     let millis = start.elapsed().as_secs_f64() * 1e3;
     let w = |p: &cga_collide::nalgebra::Point3<f64>| [p.x, p.y, p.z];
     let (wa, wb) = (w(&d.witness_a), w(&d.witness_b));
@@ -53,10 +62,7 @@ pub fn run(args: DistanceArgs) -> Result<()> {
             d.error_bound
         );
     }
-    let exact = args
-        .exact
-        .then(|| query::exact_mesh_distance(&ca, &cb))
-        .flatten();
+    let exact = args.exact.then(|| ca.exact_distance(&cb)).transpose()?;
     let (i, j) = d.triangles.unwrap_or((0, 0));
     if args.json {
         let mut value = json!({

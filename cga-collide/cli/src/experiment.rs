@@ -38,8 +38,8 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
-use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::collider::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
+use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
 /// The four pairs of the paper's experiment, in the order of its tables.

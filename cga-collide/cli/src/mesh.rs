@@ -3,7 +3,8 @@
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
-use cga_collide::shape::mesh::{MeshError, TriMesh};
+use cga_collide::shape::mesh::TriMesh;
+use cga_collide::Error;
 
 /// The built-in meshes, by the names the command line accepts.
 const BUILT_IN: &str = "bunny, bunny00, armadillo";
@@ -28,7 +29,7 @@ pub fn load_mesh(spec: &str, role: &str) -> Result<TriMesh> {
     match TriMesh::load(path) {
         Ok(mesh) => Ok(mesh),
         // No file and no mesh extension: most likely a mistyped built-in name.
-        Err(MeshError::UnknownFormat { .. }) if !path.exists() => bail!(
+        Err(Error::UnknownFormat { .. }) if !path.exists() => bail!(
             "{which}: {spec}: no such file, and not a built-in mesh ({BUILT_IN}); check the \
              name, or the path of a .obj, .off, .ply or .stl file"
         ),

@@ -1,7 +1,9 @@
-//! `--rotate` and `--translate` (the pose of mesh B), and the one conversion of the CLI's
-//! poses, "degrees about x, then y, then z, then a translation", to an isometry.
+//! `--rotate` and `--translate` (the pose of mesh B). The convention, "degrees about x, then y,
+//! then z, then a translation", is the library's [`pose_from_degrees`], so a pose written for the
+//! command line is the same pose in a program.
 
-use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+use cga_collide::collider::pose_from_degrees;
+use cga_collide::nalgebra::Isometry3;
 use clap::Args;
 
 use crate::args::parse_triple;
@@ -20,23 +22,11 @@ pub struct PoseArgs {
 impl PoseArgs {
     /// The isometry (identity parts where an option is not given).
     pub fn isometry(&self) -> Isometry3<f64> {
-        pose_from_degrees_xyz(
+        pose_from_degrees(
             self.rotate.unwrap_or([0.0; 3]),
             self.translate.unwrap_or([0.0; 3]),
         )
     }
-}
-
-/// Rotation by `rotate` degrees about x, then y, then z (fixed axes), then translation by
-/// `translate`: the poses of `--rotate`/`--translate` and of `--poses` files. The only place
-/// the CLI turns such a pose into an isometry.
-pub fn pose_from_degrees_xyz(rotate: [f64; 3], translate: [f64; 3]) -> Isometry3<f64> {
-    let [ax, ay, az] = rotate.map(f64::to_radians);
-    let rotation = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), az)
-        * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), ay)
-        * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), ax);
-    let [tx, ty, tz] = translate;
-    Isometry3::from_parts(Translation3::new(tx, ty, tz), rotation)
 }
 
 #[cfg(test)]
@@ -46,7 +36,7 @@ mod tests {
 
     #[test]
     fn rotates_about_x_then_y_then_z_then_translates() {
-        let iso = pose_from_degrees_xyz([90.0, 90.0, 0.0], [1.0, 2.0, 3.0]);
+        let iso = pose_from_degrees([90.0, 90.0, 0.0], [1.0, 2.0, 3.0]);
         // y -> z about x, then z -> x about y.
         let p = iso * Point3::new(0.0, 1.0, 0.0);
         assert!((p - Point3::new(2.0, 2.0, 3.0)).norm() < 1e-12, "{p}");

@@ -12,12 +12,13 @@ use std::path::Path;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
+use cga_collide::collider::{Collider, PosePair};
 use cga_collide::nalgebra::Isometry3;
-use cga_collide::query::{BatchError, Collider, PosePair};
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::Error;
 use serde_json::json;
 
-use crate::placement::pose_from_degrees_xyz;
+use cga_collide::collider::pose_from_degrees;
 
 /// What the pose run prints.
 pub struct Options<'a> {
@@ -63,7 +64,7 @@ pub fn parse(text: &str, name: &str) -> Result<Vec<(usize, Isometry3<f64>)>> {
         }
         poses.push((
             n + 1,
-            pose_from_degrees_xyz([v[0], v[1], v[2]], [v[3], v[4], v[5]]),
+            pose_from_degrees([v[0], v[1], v[2]], [v[3], v[4], v[5]]),
         ));
     }
     if poses.is_empty() {
@@ -86,7 +87,10 @@ pub fn run(a: TriMesh, b: TriMesh, options: &Options<'_>) -> Result<()> {
         .map(|(_, p)| PosePair::new(Isometry3::identity(), p))
         .collect();
     // A pose without an answer is reported at its line of the file.
-    let at_line = |e: BatchError| anyhow::anyhow!("{name}:{}: {}", lines[e.index], e.source);
+    let at_line = |e: Error| match e {
+        Error::InBatch { index, source } => anyhow::anyhow!("{name}:{}: {source}", lines[index]),
+        other => other.into(),
+    };
     if options.threads == Some(0) {
         bail!("--threads 0: give at least 1, or leave --threads out to use every core");
     }
@@ -151,13 +155,10 @@ mod tests {
         )
         .unwrap();
         assert_eq!(poses.len(), 2);
-        assert_eq!(
-            poses[0],
-            (2, pose_from_degrees_xyz([0.0; 3], [0.3, 0.05, 0.0]))
-        );
+        assert_eq!(poses[0], (2, pose_from_degrees([0.0; 3], [0.3, 0.05, 0.0])));
         assert_eq!(
             poses[1],
-            (4, pose_from_degrees_xyz([90.0, 0.0, 0.0], [1.0, 2.0, 3.0]))
+            (4, pose_from_degrees([90.0, 0.0, 0.0], [1.0, 2.0, 3.0]))
         );
         let e = parse("1 2 3\n", "f").unwrap_err().to_string();
         assert!(e.contains("f:1") && e.contains("6 numbers"), "{e}");

@@ -4,8 +4,8 @@
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
+use cga_collide::collider::Collider;
 use cga_collide::nalgebra::Point3;
-use cga_collide::query::Collider;
 use cga_collide::{Ball, Segment, Sphere, Triangle};
 use clap::Args;
 use serde_json::json;
@@ -87,9 +87,9 @@ pub fn run(args: QueryArgs) -> Result<()> {
     let what = shape.name();
     let (hits, millis, stats) = match &gpu {
         None => {
-            let collider = Collider::new(mesh);
+            let collider = Collider::new(mesh).with_mode(mode.into());
             let start = Instant::now();
-            let hits = shape.cpu_hits(&collider, mode.into());
+            let hits = shape.cpu_hits(&collider);
             (hits, start.elapsed(), None)
         }
         Some(gpu) => {

@@ -204,7 +204,7 @@ fn fill_triangle(s: &[Vector3<f64>; 3], rgb: [u8; 3], depth: &mut [f64], image: 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cga_collide::query::{self, Collider};
+    use cga_collide::collider::Collider;
 
     fn cube_at(x: f64) -> TriMesh {
         TriMesh::cuboid(Point3::new(x, 0.0, 0.0), Point3::new(x + 1.0, 1.0, 1.0)).unwrap()
@@ -213,8 +213,8 @@ mod tests {
     fn curve_pixels(b: &TriMesh) -> usize {
         let a = cube_at(0.0);
         let (ca, cb) = (Collider::new(a.clone()), Collider::new(b.clone()));
-        let contacts = query::contact_geometry(&ca, &cb);
-        let pairs = ca.intersecting_pairs(&cb, query::Mode::Bvh);
+        let contacts = ca.contacts(&cb);
+        let pairs = ca.intersecting_pairs(&cb);
         draw(
             &a,
             b,

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use cga_collide::query::{self, Collider};
+
+use cga_collide::collider::Collider;
 use clap::Args;
 use serde_json::json;
 
@@ -35,7 +36,7 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     let collider = Collider::new(mesh);
     let build = start.elapsed();
     let start = Instant::now();
-    let pairs = query::self_intersections(&collider);
+    let pairs = collider.self_intersections();
     let millis = start.elapsed().as_secs_f64() * 1e3;
     if let Some(path) = &args.pairs {
         let mut out = std::io::BufWriter::new(

@@ -12,10 +12,10 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::format;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
-use cga_collide::query::Collider;
 use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
 use clap::{Args, Subcommand, ValueEnum};
 use serde_json::json;

@@ -62,7 +62,7 @@ impl Collider {
     /// exact intersection (a point, a segment or a coplanar polygon), sorted by pair.
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::ContactGeometry, Collider, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::ContactGeometry, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let touching = cube.placed(&Isometry3::translation(1.0, 0.0, 0.0))?;
     /// let contacts = cube.contacts(&touching);

@@ -62,8 +62,8 @@ mod pose;
 pub(crate) mod poses;
 mod self_intersection;
 
-pub use pose::{pose_from_degrees, PosePair};
 pub use contacts::Contact;
+pub use pose::{pose_from_degrees, PosePair};
 
 use nalgebra::{Isometry3, Point3};
 
