@@ -57,6 +57,10 @@ use crate::query::contact::{clip, half, is_zero, lerp, one, q3, zero, Q3};
 use crate::query::containment::exact_point_in_solid;
 use crate::query::{triangle_intersection, ContactGeometry};
 
+/// Every intersecting triangle pair `(i, j)` with the exact intersection of the two triangles,
+/// sorted by pair: what [`Collider::contacts`] returns.
+pub type Contacts = Vec<((u32, u32), ContactGeometry)>;
+
 impl Collider {
     /// Every intersecting triangle pair `(i, j)` of `self` and `other` (in one frame) with its
     /// exact intersection (a point, a segment or a coplanar polygon), sorted by pair.
@@ -69,7 +73,7 @@ impl Collider {
     /// assert!(contacts.iter().any(|(_, g)| matches!(g, ContactGeometry::Polygon(_))));
     /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn contacts(&self, other: &Collider) -> Vec<((u32, u32), ContactGeometry)> {
+    pub fn contacts(&self, other: &Collider) -> Contacts {
         use crate::parallel::*;
         self.intersecting_pairs(other)
             .par_iter()
@@ -87,7 +91,7 @@ impl Collider {
         pose_a: &Isometry3<f64>,
         other: &Collider,
         pose_b: &Isometry3<f64>,
-    ) -> Result<Vec<((u32, u32), ContactGeometry)>, Error> {
+    ) -> Result<Contacts, Error> {
         let (a, b) = self.placed_pair(pose_a, other, pose_b)?;
         Ok(a.contacts(&b))
     }

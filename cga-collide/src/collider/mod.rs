@@ -62,7 +62,7 @@ mod pose;
 pub(crate) mod poses;
 mod self_intersection;
 
-pub use contacts::Contact;
+pub use contacts::{Contact, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
 
 use nalgebra::{Isometry3, Point3};
