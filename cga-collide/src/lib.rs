@@ -19,6 +19,14 @@
 //!
 //! Errors of every kind are one type, [`Error`], saying what was wrong and where.
 //!
+//! # Features
+//! | feature | what it adds | default |
+//! |---|---|---|
+//! | `parallel` | brute-force scans, pair lists, batches and tree builds over all cores (rayon) | on |
+//! | `builtin-meshes` | the bunny, bunny00 and armadillo fixture meshes compiled in (about 1.8 MB) | off |
+//! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact after a CPU re-decision | off |
+//! | `testing` | oracles, adversarial inputs, `f64` baselines, the papers' research variants | off |
+//!
 //! # One calling style
 //! Every question about meshes is a method of the [`Collider`] that holds the built data: in one
 //! frame `a.x(&b)`, under poses `a.x_at(&pose_a, &b, &pose_b)` (coal's and parry's order), many
