@@ -169,6 +169,17 @@ impl Aabb {
     }
 
     /// Conservative test: `false` only if the closed ball (centre `c`, radius `r`) misses the
+    /// Whether the closed box meets the ray from `p` along `+x` (exact: comparisons only); the
+    /// candidates of the ray-parity point-in-solid test.
+    #[inline]
+    pub fn meets_x_ray(&self, p: &Point3<f64>) -> bool {
+        self.min[1] <= p.y
+            && p.y <= self.max[1]
+            && self.min[2] <= p.z
+            && p.z <= self.max[2]
+            && self.max[0] >= p.x
+    }
+
     /// box.
     pub fn may_meet_ball(&self, c: &Point3<f64>, r: f64) -> bool {
         let (near, _) = self.distances2(c);

@@ -19,18 +19,12 @@ impl Collider {
     ///
     /// The answer is the solid's for a closed mesh (every edge used by an even number of
     /// triangles, see [`TriMesh::is_closed`]); for other meshes it is the even–odd rule of
-    /// that one ray.
+    /// that one ray. A point with a non-finite coordinate lies in no solid: `false`.
     pub fn contains_point(&self, p: &Point3<f64>) -> bool {
         let Ok(point) = Segment::new(*p, *p) else {
             return false;
         };
-        let on_ray = |b: &Aabb| {
-            b.min[1] <= p.y
-                && p.y <= b.max[1]
-                && b.min[2] <= p.z
-                && p.z <= b.max[2]
-                && b.max[0] >= p.x
-        };
+        let on_ray = |b: &Aabb| b.meets_x_ray(p);
         // (on the surface, crossings)
         let visit = |i: u32| -> (bool, bool) {
             let tri = self.mesh.corners(i);

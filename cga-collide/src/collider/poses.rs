@@ -435,13 +435,7 @@ impl Collider {
         let Ok(point) = Segment::new(*p, *p) else {
             return Ok(false);
         };
-        let on_ray = |b: &Aabb| {
-            b.min[1] <= p.y
-                && p.y <= b.max[1]
-                && b.min[2] <= p.z
-                && p.z <= b.max[2]
-                && b.max[0] >= p.x
-        };
+        let on_ray = |b: &Aabb| b.meets_x_ray(p);
         let mut crossings = 0usize;
         let on = self
             .posed_candidates(&world, pose, on_ray, |t| {

@@ -45,6 +45,7 @@ use crate::query::closest_points::{
 };
 use crate::query::within_distance::WithinDistance;
 use crate::query::Intersects;
+use crate::shape::bounded::{coords, corner_coords};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 // ---------------------------------------------------------------- results
@@ -86,11 +87,6 @@ impl ExactDistance {
     }
 }
 
-#[inline]
-fn pt(p: &Point3<f64>) -> V<f64> {
-    [p.x, p.y, p.z]
-}
-
 fn q(x: f64) -> Rational {
     // Shapes and meshes hold finite coordinates only.
     rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)
@@ -98,11 +94,6 @@ fn q(x: f64) -> Rational {
 
 fn qv(p: &V<f64>) -> V<Rational> {
     [q(p[0]), q(p[1]), q(p[2])]
-}
-
-fn tri(t: &Triangle) -> [V<f64>; 3] {
-    let [a, b, c] = t.vertices();
-    [pt(a), pt(b), pt(c)]
 }
 
 /// Proves `true distance ∈ [d - e, d + e]` with exact clearance tests and returns
@@ -174,7 +165,7 @@ fn exact(near: Near<Rational>, triangles: Option<(u32, u32)>) -> ExactDistance {
 
 /// The minimum distance between two closed segments, with witnesses and a certified bound.
 pub fn distance_segment_segment(a: &Segment, b: &Segment) -> CertifiedDistance {
-    let (p0, p1, q0, q1) = (pt(a.a()), pt(a.b()), pt(b.a()), pt(b.b()));
+    let (p0, p1, q0, q1) = (coords(a.a()), coords(a.b()), coords(b.a()), coords(b.b()));
     finish(
         segment_segment(&p0, &p1, &q0, &q1),
         scale_of(&[&p0, &p1, &q0, &q1]),
@@ -186,7 +177,7 @@ pub fn distance_segment_segment(a: &Segment, b: &Segment) -> CertifiedDistance {
 
 /// The minimum distance between a closed segment and a closed triangle.
 pub fn distance_segment_triangle(a: &Segment, b: &Triangle) -> CertifiedDistance {
-    let (p0, p1, t) = (pt(a.a()), pt(a.b()), tri(b));
+    let (p0, p1, t) = (coords(a.a()), coords(a.b()), corner_coords(b));
     finish(
         segment_triangle(&p0, &p1, &t),
         scale_of(&[&p0, &p1, &t[0], &t[1], &t[2]]),
@@ -198,7 +189,7 @@ pub fn distance_segment_triangle(a: &Segment, b: &Triangle) -> CertifiedDistance
 
 /// The minimum distance between two closed triangles.
 pub fn distance_triangle_triangle(a: &Triangle, b: &Triangle) -> CertifiedDistance {
-    let (s, t) = (tri(a), tri(b));
+    let (s, t) = (corner_coords(a), corner_coords(b));
     finish(
         triangle_triangle(&s, &t),
         scale_of(&[&s[0], &s[1], &s[2], &t[0], &t[1], &t[2]]),
@@ -210,7 +201,7 @@ pub fn distance_triangle_triangle(a: &Triangle, b: &Triangle) -> CertifiedDistan
 
 /// The exact squared distance and witnesses of two closed segments.
 pub fn exact_distance_segment_segment(a: &Segment, b: &Segment) -> ExactDistance {
-    let v = |p: &Point3<f64>| qv(&pt(p));
+    let v = |p: &Point3<f64>| qv(&coords(p));
     exact(
         segment_segment(&v(a.a()), &v(a.b()), &v(b.a()), &v(b.b())),
         None,
@@ -219,13 +210,19 @@ pub fn exact_distance_segment_segment(a: &Segment, b: &Segment) -> ExactDistance
 
 /// The exact squared distance and witnesses of a closed segment and a closed triangle.
 pub fn exact_distance_segment_triangle(a: &Segment, b: &Triangle) -> ExactDistance {
-    let t = tri(b).map(|p| qv(&p));
-    exact(segment_triangle(&qv(&pt(a.a())), &qv(&pt(a.b())), &t), None)
+    let t = corner_coords(b).map(|p| qv(&p));
+    exact(
+        segment_triangle(&qv(&coords(a.a())), &qv(&coords(a.b())), &t),
+        None,
+    )
 }
 
 /// The exact squared distance and witnesses of two closed triangles.
 pub fn exact_distance_triangle_triangle(a: &Triangle, b: &Triangle) -> ExactDistance {
-    let (s, t) = (tri(a).map(|p| qv(&p)), tri(b).map(|p| qv(&p)));
+    let (s, t) = (
+        corner_coords(a).map(|p| qv(&p)),
+        corner_coords(b).map(|p| qv(&p)),
+    );
     exact(triangle_triangle(&s, &t), None)
 }
 
@@ -335,7 +332,12 @@ fn scale_with(points: &[&V<f64>], radii: &[f64]) -> f64 {
 /// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn distance_ball_ball(a: &Ball, b: &Ball) -> CertifiedDistance {
-    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let (ca, cb, ra, rb) = (
+        coords(a.centre()),
+        coords(b.centre()),
+        a.radius(),
+        b.radius(),
+    );
     let d = norm(&sub(&cb, &ca));
     let near = if d > ra { step(&ca, &cb, ra) } else { cb };
     finish_radial(
@@ -348,7 +350,12 @@ pub fn distance_ball_ball(a: &Ball, b: &Ball) -> CertifiedDistance {
 /// The minimum distance between a solid ball and a sphere *surface* (a ball deep inside the
 /// sphere is at the distance to the surface).
 pub fn distance_ball_sphere(a: &Ball, b: &Sphere) -> CertifiedDistance {
-    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let (ca, cb, ra, rb) = (
+        coords(a.centre()),
+        coords(b.centre()),
+        a.radius(),
+        b.radius(),
+    );
     let d = norm(&sub(&cb, &ca));
     // The points of the ball nearest to and farthest from the sphere's centre.
     let near = if d > ra { step(&ca, &cb, ra) } else { cb };
@@ -367,7 +374,12 @@ pub fn distance_ball_sphere(a: &Ball, b: &Sphere) -> CertifiedDistance {
 /// The minimum distance between two sphere *surfaces* (nested spheres are at the gap between
 /// the surfaces).
 pub fn distance_sphere_sphere(a: &Sphere, b: &Sphere) -> CertifiedDistance {
-    let (ca, cb, ra, rb) = (pt(a.centre()), pt(b.centre()), a.radius(), b.radius());
+    let (ca, cb, ra, rb) = (
+        coords(a.centre()),
+        coords(b.centre()),
+        a.radius(),
+        b.radius(),
+    );
     let d = norm(&sub(&cb, &ca));
     // `b`'s surface as a set seen from `a`'s centre: nearest and farthest points.
     let near = if d > 0.0 {
@@ -417,7 +429,7 @@ fn circle_point(ca: &V<f64>, ra: f64, cb: &V<f64>, rb: f64) -> V<f64> {
 
 /// The minimum distance between a closed segment and a solid ball.
 pub fn distance_segment_ball(a: &Segment, b: &Ball) -> CertifiedDistance {
-    let (p0, p1, c) = (pt(a.a()), pt(a.b()), pt(b.centre()));
+    let (p0, p1, c) = (coords(a.a()), coords(a.b()), coords(b.centre()));
     finish_radial(
         set_to_ball(point_segment(&p0, &p1, &c), &c, b.radius()),
         scale_with(&[&p0, &p1, &c], &[b.radius()]),
@@ -427,7 +439,7 @@ pub fn distance_segment_ball(a: &Segment, b: &Ball) -> CertifiedDistance {
 
 /// The minimum distance between a closed segment and a sphere *surface*.
 pub fn distance_segment_sphere(a: &Segment, b: &Sphere) -> CertifiedDistance {
-    let (p0, p1, c) = (pt(a.a()), pt(a.b()), pt(b.centre()));
+    let (p0, p1, c) = (coords(a.a()), coords(a.b()), coords(b.centre()));
     finish_radial(
         set_to_surface(
             point_segment(&p0, &p1, &c),
@@ -442,7 +454,7 @@ pub fn distance_segment_sphere(a: &Segment, b: &Sphere) -> CertifiedDistance {
 
 /// The minimum distance between a closed triangle and a solid ball.
 pub fn distance_triangle_ball(a: &Triangle, b: &Ball) -> CertifiedDistance {
-    let (t, c) = (tri(a), pt(b.centre()));
+    let (t, c) = (corner_coords(a), coords(b.centre()));
     finish_radial(
         set_to_ball(point_triangle(&t, &c), &c, b.radius()),
         scale_with(&[&t[0], &t[1], &t[2], &c], &[b.radius()]),
@@ -452,7 +464,7 @@ pub fn distance_triangle_ball(a: &Triangle, b: &Ball) -> CertifiedDistance {
 
 /// The minimum distance between a closed triangle and a sphere *surface*.
 pub fn distance_triangle_sphere(a: &Triangle, b: &Sphere) -> CertifiedDistance {
-    let (t, c) = (tri(a), pt(b.centre()));
+    let (t, c) = (corner_coords(a), coords(b.centre()));
     finish_radial(
         set_to_surface(point_triangle(&t, &c), farthest(&t, &c), &c, b.radius()),
         scale_with(&[&t[0], &t[1], &t[2], &c], &[b.radius()]),

@@ -49,6 +49,7 @@ use crate::exact::predicates::{
     BallBall, EdgeSide, LineDistance, Orient2d, PlaneDistance, PointPower, SegmentDot, SphereSphere,
 };
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
+use crate::shape::bounded::{coords, corner_coords};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 type P3 = [f64; 3];
@@ -74,17 +75,6 @@ impl<A: IntersectsWith<B>, B: ?Sized> Intersects<B> for A {
     fn intersects(&self, rhs: &B) -> bool {
         self.intersects_with::<ExactKernel>(rhs)
     }
-}
-
-#[inline(always)]
-fn pt(p: &Point3<f64>) -> P3 {
-    [p.x, p.y, p.z]
-}
-
-#[inline(always)]
-fn tri(t: &Triangle) -> [P3; 3] {
-    let [a, b, c] = t.vertices();
-    [pt(a), pt(b), pt(c)]
 }
 
 // ---------------------------------------------------------------- sign helpers
@@ -361,13 +351,18 @@ fn tri_ball<K: Kernel>(t: &[P3; 3], c: &P3, r: f64) -> bool {
 
 impl IntersectsWith<Segment> for Segment {
     fn intersects_with<K: Kernel>(&self, rhs: &Segment) -> bool {
-        seg_seg::<K>(&pt(self.a()), &pt(self.b()), &pt(rhs.a()), &pt(rhs.b()))
+        seg_seg::<K>(
+            &coords(self.a()),
+            &coords(self.b()),
+            &coords(rhs.a()),
+            &coords(rhs.b()),
+        )
     }
 }
 
 impl IntersectsWith<Triangle> for Segment {
     fn intersects_with<K: Kernel>(&self, rhs: &Triangle) -> bool {
-        seg_tri::<K>(&pt(self.a()), &pt(self.b()), &tri(rhs))
+        seg_tri::<K>(&coords(self.a()), &coords(self.b()), &corner_coords(rhs))
     }
 }
 
@@ -380,16 +375,16 @@ impl IntersectsWith<Segment> for Triangle {
 impl IntersectsWith<Triangle> for Triangle {
     #[inline]
     fn intersects_with<K: Kernel>(&self, rhs: &Triangle) -> bool {
-        tri_tri::<K>(&tri(self), &tri(rhs))
+        tri_tri::<K>(&corner_coords(self), &corner_coords(rhs))
     }
 }
 
 impl IntersectsWith<Ball> for Segment {
     fn intersects_with<K: Kernel>(&self, rhs: &Ball) -> bool {
         seg_ball::<K>(
-            &pt(self.a()),
-            &pt(self.b()),
-            &pt(rhs.centre()),
+            &coords(self.a()),
+            &coords(self.b()),
+            &coords(rhs.centre()),
             rhs.radius(),
         )
     }
@@ -403,7 +398,12 @@ impl IntersectsWith<Segment> for Ball {
 
 impl IntersectsWith<Sphere> for Segment {
     fn intersects_with<K: Kernel>(&self, rhs: &Sphere) -> bool {
-        let (a, b, c, r) = (pt(self.a()), pt(self.b()), pt(rhs.centre()), rhs.radius());
+        let (a, b, c, r) = (
+            coords(self.a()),
+            coords(self.b()),
+            coords(rhs.centre()),
+            rhs.radius(),
+        );
         // min distance <= r <= max distance (the maximum is at an end point).
         (point_power::<K>(&a, &c, r) != Less || point_power::<K>(&b, &c, r) != Less)
             && seg_ball::<K>(&a, &b, &c, r)
@@ -418,7 +418,7 @@ impl IntersectsWith<Segment> for Sphere {
 
 impl IntersectsWith<Ball> for Triangle {
     fn intersects_with<K: Kernel>(&self, rhs: &Ball) -> bool {
-        tri_ball::<K>(&tri(self), &pt(rhs.centre()), rhs.radius())
+        tri_ball::<K>(&corner_coords(self), &coords(rhs.centre()), rhs.radius())
     }
 }
 
@@ -430,7 +430,7 @@ impl IntersectsWith<Triangle> for Ball {
 
 impl IntersectsWith<Sphere> for Triangle {
     fn intersects_with<K: Kernel>(&self, rhs: &Sphere) -> bool {
-        let (t, c, r) = (tri(self), pt(rhs.centre()), rhs.radius());
+        let (t, c, r) = (corner_coords(self), coords(rhs.centre()), rhs.radius());
         t.iter().any(|v| point_power::<K>(v, &c, r) != Less) && tri_ball::<K>(&t, &c, r)
     }
 }

@@ -40,8 +40,6 @@
 
 use core::cmp::Ordering::{Equal, Greater, Less};
 
-use nalgebra::Point3;
-
 use crate::exact::predicates::{
     CentreDistance, CrossNorm2, EdgeSide, LineLineParam, LineLineParamRest, LineLineReach,
     LineReach, PlaneReach, ReachSign, SegmentDot,
@@ -49,6 +47,7 @@ use crate::exact::predicates::{
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
 use crate::query::intersects::extremes;
 use crate::query::Intersects;
+use crate::shape::bounded::{coords, corner_coords};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 type P3 = [f64; 3];
@@ -56,17 +55,6 @@ type K = ExactKernel;
 
 /// A reach `r0 + r1 + r2`, summed exactly inside the predicates (never rounded in `f64`).
 pub(crate) type Reach = [f64; 3];
-
-#[inline(always)]
-fn pt(p: &Point3<f64>) -> P3 {
-    [p.x, p.y, p.z]
-}
-
-#[inline(always)]
-fn tri(t: &Triangle) -> [P3; 3] {
-    let [a, b, c] = t.vertices();
-    [pt(a), pt(b), pt(c)]
-}
 
 // ---------------------------------------------------------------- points within a reach
 
@@ -227,7 +215,13 @@ impl WithinDistance<Segment> for Segment {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        segment_segment(&pt(self.a()), &pt(self.b()), &pt(rhs.a()), &pt(rhs.b()), c)
+        segment_segment(
+            &coords(self.a()),
+            &coords(self.b()),
+            &coords(rhs.a()),
+            &coords(rhs.b()),
+            c,
+        )
     }
 }
 
@@ -236,7 +230,8 @@ impl WithinDistance<Triangle> for Segment {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        segment_triangle_apart(&pt(self.a()), &pt(self.b()), &tri(rhs), c) || self.intersects(rhs)
+        segment_triangle_apart(&coords(self.a()), &coords(self.b()), &corner_coords(rhs), c)
+            || self.intersects(rhs)
     }
 }
 
@@ -245,7 +240,8 @@ impl WithinDistance<Triangle> for Triangle {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        triangle_triangle_apart(&tri(self), &tri(rhs), c) || self.intersects(rhs)
+        triangle_triangle_apart(&corner_coords(self), &corner_coords(rhs), c)
+            || self.intersects(rhs)
     }
 }
 
@@ -255,7 +251,12 @@ impl WithinDistance<Ball> for Segment {
             return answer;
         }
         let r = [rhs.radius(), c, 0.0];
-        segment_point(&pt(self.a()), &pt(self.b()), &pt(rhs.centre()), &r)
+        segment_point(
+            &coords(self.a()),
+            &coords(self.b()),
+            &coords(rhs.centre()),
+            &r,
+        )
     }
 }
 
@@ -264,7 +265,11 @@ impl WithinDistance<Ball> for Triangle {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        triangle_point(&tri(self), &pt(rhs.centre()), &[rhs.radius(), c, 0.0])
+        triangle_point(
+            &corner_coords(self),
+            &coords(rhs.centre()),
+            &[rhs.radius(), c, 0.0],
+        )
     }
 }
 
@@ -273,7 +278,12 @@ impl WithinDistance<Sphere> for Segment {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        let (a, b, o, r) = (pt(self.a()), pt(self.b()), pt(rhs.centre()), rhs.radius());
+        let (a, b, o, r) = (
+            coords(self.a()),
+            coords(self.b()),
+            coords(rhs.centre()),
+            rhs.radius(),
+        );
         reaches_out(&[a, b], &o, r, c) && segment_point(&a, &b, &o, &[r, c, 0.0])
     }
 }
@@ -283,7 +293,7 @@ impl WithinDistance<Sphere> for Triangle {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        let (t, o, r) = (tri(self), pt(rhs.centre()), rhs.radius());
+        let (t, o, r) = (corner_coords(self), coords(rhs.centre()), rhs.radius());
         reaches_out(&t, &o, r, c) && triangle_point(&t, &o, &[r, c, 0.0])
     }
 }
@@ -294,8 +304,8 @@ impl WithinDistance<Ball> for Ball {
             return answer;
         }
         point_point(
-            &pt(self.centre()),
-            &pt(rhs.centre()),
+            &coords(self.centre()),
+            &coords(rhs.centre()),
             &[self.radius(), rhs.radius(), c],
         )
     }
@@ -306,7 +316,7 @@ impl WithinDistance<Sphere> for Sphere {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        let (c1, c2) = (pt(self.centre()), pt(rhs.centre()));
+        let (c1, c2) = (coords(self.centre()), coords(rhs.centre()));
         let (r1, r2) = (self.radius(), rhs.radius());
         let (big, small) = if r1 >= r2 { (r1, r2) } else { (r2, r1) };
         point_point(&c1, &c2, &[r1, r2, c]) && centres_apart(&c1, &c2, big, small, c)
@@ -318,7 +328,7 @@ impl WithinDistance<Sphere> for Ball {
         if let Some(answer) = trivial(c) {
             return answer;
         }
-        let (c1, c2) = (pt(self.centre()), pt(rhs.centre()));
+        let (c1, c2) = (coords(self.centre()), coords(rhs.centre()));
         // Apart from outside (`d <= r1 + r2 + c`) and from inside (`d >= r2 - r1 - c`).
         point_point(&c1, &c2, &[self.radius(), rhs.radius(), c])
             && centres_apart(&c1, &c2, rhs.radius(), self.radius(), c)

@@ -187,3 +187,16 @@ impl From<Ball> for Sphere {
         }
     }
 }
+
+/// A point's coordinates as a plain array (what the predicates and `f64` searches read).
+#[inline(always)]
+pub(crate) fn coords(p: &Point3<f64>) -> [f64; 3] {
+    [p.x, p.y, p.z]
+}
+
+/// A triangle's corners as plain arrays.
+#[inline(always)]
+pub(crate) fn corner_coords(t: &Triangle) -> [[f64; 3]; 3] {
+    let [a, b, c] = t.vertices();
+    [coords(a), coords(b), coords(c)]
+}

@@ -11,7 +11,7 @@
 //! [`polyhedron::PolyhedronError`]), never a panic. The conformal
 //! (5D) representations of these objects are in [`crate::conformal`].
 
-mod bounded;
+pub(crate) mod bounded;
 pub mod mesh;
 pub mod polyhedron;
 
