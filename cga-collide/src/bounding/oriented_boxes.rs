@@ -1,6 +1,6 @@
 //! Oriented boxes around the nodes of a hierarchy, and the lower bound on the distance of two
 //! of them that orders and prunes the mesh distance searches
-//! ([`mesh_distance`](crate::query::mesh_distance) and
+//! ([`Collider::distance`](crate::collider::Collider::distance) and
 //! [`Collider::distance_at`](crate::collider::Collider::distance_at)).
 //!
 //! Axis-aligned boxes bound the distance of parts that are turned against the axes (or against
@@ -24,7 +24,7 @@
 //!
 //! # The bound
 //! Let `z = D (x - τ_A)` be A's frame, where the pose queries
-//! ([`crate::query::posed`], "The rounding bound") prove that a placed point of A's node lies
+//! (the pose queries (`collider/poses.rs`, crate-private; its docs are in the source), "The rounding bound") prove that a placed point of A's node lies
 //! within `r_A` (per coordinate) of `O_A`, the node's box, and a placed point of B's node
 //! within `r_B` of `R̂ O_B + t̂`, with `R̂`, `t̂` the rounded relative motion and
 //! `r_A + r_B ≤ r`, the pose margin (for meshes in one frame: `D = R̂ = I`, `t̂ = 0`, `r = 0`).

@@ -8,7 +8,7 @@
 //! first distance search and read only by the distance searches.
 //!
 //! Built once with the collider (about 30 bytes a triangle for the nodes, 72 for the vertices,
-//! and 64 for the oriented boxes once fitted); the pose queries of [`crate::query::posed`] read nothing else
+//! and 64 for the oriented boxes once fitted); the pose queries of the pose queries (`collider/poses.rs`, crate-private; its docs are in the source) read nothing else
 //! of the mesh.
 //!
 //! # Conservativeness

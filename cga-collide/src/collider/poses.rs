@@ -34,7 +34,7 @@
 //! [`Collider::distance_at`] run on the same descent, placed leaves and relative boxes; only
 //! the node test changes.
 //! * **Clearance `c`** (`0 ≤ c < ∞`; other `c` are answered as by
-//!   [`mesh_pairs_within_distance`](crate::query::mesh_pairs_within_distance) without a
+//!   [`Collider::pairs_within_distance`](crate::collider::Collider::pairs_within_distance) without a
 //!   descent). If placed points `x`, `y` of the two meshes have `|x - y| ≤ c`, then on axis `i`
 //!   of A's frame the two points `D x - D τ_A` and `D y - D τ_A` of the boxes above differ by
 //!   `|Dᵢ · (x - y)| ≤ |Dᵢ|₂ c`, where `Dᵢ` is row `i` of `D`. As `D = M̂_Aᵀ`,
@@ -54,11 +54,11 @@
 //!   keep tight bounds), and the lower bound on `|x - y|²` from their gaps on the six box axes,
 //!   every rounding paid, is proved in the module `oriented_boxes` (crate-private; its docs
 //!   are in the source). It orders a best-first search over node pairs, as
-//!   [`mesh_distance`](crate::query::mesh_distance) does with the same boxes in one frame;
-//!   triangle pairs are examined, pruned and certified by the very code of `mesh_distance`, on
+//!   [`Collider::distance`](crate::collider::Collider::distance) does with the same boxes in one frame;
+//!   triangle pairs are examined, pruned and certified by the very code of `distance`, on
 //!   the placed triangles.
 //!
-//! **What `distance_at` has in common with `mesh_distance` on the placed copies.** Always: the
+//! **What `distance_at` has in common with `distance` on the placed copies.** Always: the
 //! same certified guarantee — the true distance of the placed meshes lies in
 //! `[distance - error_bound, distance + error_bound]`, the witnesses are the `f64` nearest
 //! points of the triangle pair reported, on the placed mesh's coordinates, and that pair's
@@ -66,7 +66,7 @@
 //! `f64` squared distance, and among equal ones the smallest pair `(i, j)`; both skip only
 //! pairs **proved** farther than the best so far. The error bound is a function of that pair
 //! and of the meshes alone (the lower end is decided over all pairs, see
-//! [`mesh_distance`](crate::query::mesh_distance)). So the two results are **identical in every
+//! [`Collider::distance`](crate::collider::Collider::distance)). So the two results are **identical in every
 //! field** unless a pair's `f64` squared distance is at or below the result while its true
 //! distance is above it (rounding of the `f64` closest-points routine, so a near-tie at the
 //! level of the last bits); only then may the two searches, which visit pairs in different
@@ -89,7 +89,7 @@
 //! let (wa, wb) = (a.placed(&pa).unwrap(), b.placed(&pb).unwrap());
 //! assert_eq!(pairs, wa.intersecting_pairs(&wb));
 //! assert_eq!(a.collides_at(&pa, &b, &pb)?, !pairs.is_empty());
-//! # Ok::<(), cga_collide::query::Error>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 mod distance;
@@ -342,7 +342,7 @@ fn cores() -> usize {
 }
 
 /// Pose queries: `self` at `pose`, the other mesh (if any) at its own pose. Each answer equals
-/// the answer of the same query on [`Collider::placed`] copies (see [`crate::query::posed`]).
+/// the answer of the same query on [`Collider::placed`] copies (see the pose queries (`collider/poses.rs`, crate-private; its docs are in the source)).
 impl Collider {
     /// Whether any triangle of `self` placed at `pose_a` meets any triangle of `other` placed
     /// at `pose_b` (stops at the first hit; single-threaded). Equal to

@@ -77,7 +77,7 @@ impl PosedPair<'_> {
     /// the pairs left open (see [`examine_pair`]). Node pairs are ordered and pruned by
     /// their [oriented boxes](Self::oriented_gaps), triangle pairs by the distance of their exact
     /// placed boxes, and each examined pair is handled exactly as in
-    /// [`mesh_distance`](crate::query::mesh_distance), ties included. Both meshes non-empty.
+    /// [`Collider::distance`](crate::collider::Collider::distance), ties included. Both meshes non-empty.
     fn nearest(&self, open: &mut Open) -> (u32, u32) {
         let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
         let (na, nb) = (ta.nodes(), tb.nodes());
@@ -132,7 +132,7 @@ impl PosedPair<'_> {
 
 /// Clearance and distance under poses: `self` at `pose_a`, `other` at `pose_b`. Each answer
 /// equals the answer of the same query on [`Collider::placed`] copies (see
-/// [`crate::query::posed`], section "Clearance and distance").
+/// the pose queries (`collider/poses.rs`, crate-private; its docs are in the source), section "Clearance and distance").
 impl Collider {
     /// Every pair `(i, j)` (triangle `i` of `self` at `pose_a`, `j` of `other` at `pose_b`)
     /// within distance `c` of each other, exactly (closed: distance exactly `c` counts), sorted;
@@ -141,7 +141,7 @@ impl Collider {
     /// `c` outside `[0, ∞)` included (NaN and negative: no pair; `+∞`: every pair).
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let (id, moved) = (Isometry3::identity(), Isometry3::translation(1.5, 0.0, 0.0));
     /// // A gap of exactly 0.5, without placing the cube.
@@ -208,14 +208,14 @@ impl Collider {
     /// `self.placed(pose_a)?.distance(&other.placed(pose_b)?)`: the same
     /// certified guarantee always, and the same value in every field (distance, witnesses,
     /// pair, bound) unless rounding makes a pair's `f64` distance fall below its true distance
-    /// by more than the searches' proofs allow for (see [`crate::query::posed`], section
+    /// by more than the searches' proofs allow for (see the pose queries (`collider/poses.rs`, crate-private; its docs are in the source), section
     /// "Clearance and distance", for exactly what is equal).
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, query::{self, Collider}, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let (id, moved) = (Isometry3::identity(), Isometry3::translation(1.5, 0.25, 0.0));
-    /// let d = cube.distance_at(&id, &cube, &moved)?.unwrap();
+    /// let d = cube.distance_at(&id, &cube, &moved)?;
     /// assert!((d.distance - 0.5).abs() <= d.error_bound && d.error_bound < 1e-12);
     /// let placed = cube.placed(&moved).unwrap();
     /// assert_eq!(d, cube.distance(&placed)?);
