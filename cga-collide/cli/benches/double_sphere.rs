@@ -14,7 +14,7 @@
 use std::hint::black_box;
 
 use cga_cli::experiment::placement;
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
+use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
@@ -42,11 +42,10 @@ fn brute(
     };
     let (ta, tb) = (tris(a, pa), tris(b, pb));
     ta.iter().any(|x| tb.iter().any(|y| x.intersects(y)))
-        || convex_solids_intersect(
-            &ConvexMeshRef::new(pa, a.triangles()).unwrap(),
-            &ConvexMeshRef::new(pb, b.triangles()).unwrap(),
-        )
-        .intersect
+        || ConvexMeshRef::new(pa, a.triangles())
+            .unwrap()
+            .collides_solid(&ConvexMeshRef::new(pb, b.triangles()).unwrap())
+            .intersect
 }
 
 fn bench(c: &mut Criterion) {
@@ -86,11 +85,10 @@ fn bench(c: &mut Criterion) {
                     .iter()
                     .filter(|(pa, pb)| {
                         let (va, vb) = (placed(&a, pa), placed(&b, pb));
-                        convex_solids_intersect(
-                            &ConvexMeshRef::new(&va, a.triangles()).unwrap(),
-                            &ConvexMeshRef::new(&vb, b.triangles()).unwrap(),
-                        )
-                        .intersect
+                        ConvexMeshRef::new(&va, a.triangles())
+                            .unwrap()
+                            .collides_solid(&ConvexMeshRef::new(&vb, b.triangles()).unwrap())
+                            .intersect
                     })
                     .count()
             })

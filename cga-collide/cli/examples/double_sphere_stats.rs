@@ -10,7 +10,7 @@
 use std::collections::BTreeMap;
 
 use cga_cli::experiment::placement;
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
+use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::Point3;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
@@ -50,11 +50,10 @@ fn main() {
                 collisions += usize::from(out.collides);
                 let va: Vec<Point3<f64>> = a.vertices().iter().map(|v| *pa * v).collect();
                 let vb: Vec<Point3<f64>> = b.vertices().iter().map(|v| *pb * v).collect();
-                let truth = convex_solids_intersect(
-                    &ConvexMeshRef::new(&va, a.triangles()).unwrap(),
-                    &ConvexMeshRef::new(&vb, b.triangles()).unwrap(),
-                )
-                .intersect;
+                let truth = ConvexMeshRef::new(&va, a.triangles())
+                    .unwrap()
+                    .collides_solid(&ConvexMeshRef::new(&vb, b.triangles()).unwrap())
+                    .intersect;
                 mismatches += usize::from(truth != out.collides);
             }
             println!(

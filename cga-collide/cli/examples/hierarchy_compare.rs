@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use cga_cli::experiment::{calibrate_radius, placement, PAPER_PAIRS};
 use cga_cli::plot::{svg_bar_charts, BarChart};
-use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
+use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
@@ -140,11 +140,11 @@ fn main() {
                 va.extend(pa.vertices().iter().map(|v| pose_a * v));
                 vb.clear();
                 vb.extend(pb.vertices().iter().map(|v| pose_b * v));
-                let truth = convex_solids_intersect(
-                    &ma.with_vertices(&va).expect("finite"),
-                    &mb.with_vertices(&vb).expect("finite"),
-                )
-                .intersect;
+                let truth = ma
+                    .with_vertices(&va)
+                    .expect("finite")
+                    .collides_solid(&mb.with_vertices(&vb).expect("finite"))
+                    .intersect;
                 let record = |m: &mut Method, answer: bool, nanos: u128| {
                     m.score.nanos += nanos;
                     m.score.agree += u64::from(answer == truth);

@@ -1,6 +1,6 @@
 //! The experiment of the double-sphere paper (§5, Tables 2 and 3), run on the exact
 //! hierarchy of [`cga_collide::hierarchy::double_sphere`] and checked, placement by placement, against the
-//! independent exact reference [`cga_collide::collider::convex::convex_solids_intersect`].
+//! independent exact reference [`cga_collide::collider::convex::ConvexMeshRef::collides_solid`].
 //!
 //! Two convex polyhedra (circumradius 1, see [`cga_collide::shape::polyhedron`]) are placed with their
 //! centres uniformly at random inside an *experiment sphere* and with uniformly random
@@ -38,7 +38,7 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
-use cga_collide::collider::convex::{convex_solids_intersect, Certificate, ConvexMeshRef};
+use cga_collide::collider::convex::{Certificate, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 
@@ -314,7 +314,7 @@ fn reference(
         // Finite poses of valid polyhedra give valid meshes.
         _ => unreachable!("a placed polyhedron is a valid mesh"),
     };
-    let v = convex_solids_intersect(&ma, &mb);
+    let v = ma.collides_solid(&mb);
     (v.intersect, v.certificate)
 }
 

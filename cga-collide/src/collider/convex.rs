@@ -8,7 +8,7 @@
 //! intersecting), with the vertices exactly as given: after a rigid motion in `f64` the faces
 //! of a polyhedron are no longer exactly planar, so "the polyhedron" means these triangles.
 //!
-//! [`convex_solids_intersect`] runs GJK (Gilbert–Johnson–Keerthi) on the Minkowski difference
+//! [`ConvexMeshRef::collides_solid`] runs GJK (Gilbert–Johnson–Keerthi) on the Minkowski difference
 //! `A - B` in `f64` and then *certifies* what it found, so that rounding can never make the
 //! answer wrong:
 //!
@@ -27,7 +27,7 @@
 //! rare on random placements, and the experiment reports how often it ran.
 //!
 //! ```
-//! use cga_collide::collider::convex::{convex_solids_intersect, ConvexMeshRef};
+//! use cga_collide::collider::convex::ConvexMeshRef;
 //! use nalgebra::Point3;
 //!
 //! // A unit cube and the same cube moved by (0.5, 0.5, 0.5): they overlap.
@@ -47,8 +47,8 @@
 //!     ConvexMeshRef::new(&b, &tris)?,
 //!     ConvexMeshRef::new(&c, &tris)?,
 //! );
-//! assert!(convex_solids_intersect(&a, &b).intersect);
-//! assert!(!convex_solids_intersect(&a, &c).intersect);
+//! assert!(a.collides_solid(&b).intersect);
+//! assert!(!a.collides_solid(&c).intersect);
 //! # Ok::<(), cga_collide::Error>(())
 //! ```
 
@@ -67,11 +67,19 @@ use crate::{Intersects, Triangle};
 /// from outside.
 ///
 /// Convexity and closedness are the caller's promise (they are what makes the certificates of
-/// [`convex_solids_intersect`] valid); [`ConvexMeshRef::new`] checks the cheap invariants.
+/// [`ConvexMeshRef::collides_solid`] valid); [`ConvexMeshRef::new`] checks the cheap invariants.
 #[derive(Debug, Clone, Copy)]
 pub struct ConvexMeshRef<'a> {
     vertices: &'a [Point3<f64>],
     triangles: &'a [[u32; 3]],
+}
+
+impl ConvexMeshRef<'_> {
+    /// Whether the closed convex solids `self` and `other` share a point (touching counts),
+    /// exactly, with the certificate that decided it (see the module docs).
+    pub fn collides_solid(&self, other: &ConvexMeshRef<'_>) -> Verdict {
+        convex_solids_intersect(self, other)
+    }
 }
 
 impl<'a> ConvexMeshRef<'a> {
@@ -136,7 +144,7 @@ impl<'a> ConvexMeshRef<'a> {
     }
 }
 
-/// How [`convex_solids_intersect`] reached its answer.
+/// How [`ConvexMeshRef::collides_solid`] reached its answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Certificate {
     /// A certified separating direction was found: disjoint.
@@ -147,7 +155,7 @@ pub enum Certificate {
     Exhaustive,
 }
 
-/// The answer of [`convex_solids_intersect`] and how it was obtained.
+/// The answer of [`ConvexMeshRef::collides_solid`] and how it was obtained.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Verdict {
     /// Whether the closed solids share at least one point.
@@ -158,7 +166,7 @@ pub struct Verdict {
 
 /// Whether two closed convex solids, bounded by the given triangle meshes, intersect (exact;
 /// touching counts). See the [module documentation](self) for how it is certified.
-pub fn convex_solids_intersect(a: &ConvexMeshRef<'_>, b: &ConvexMeshRef<'_>) -> Verdict {
+fn convex_solids_intersect(a: &ConvexMeshRef<'_>, b: &ConvexMeshRef<'_>) -> Verdict {
     match gjk(a.vertices, b.vertices) {
         Gjk::Separated => Verdict {
             intersect: false,
