@@ -118,8 +118,8 @@ impl Device {
     }
 
     /// The pairs among `candidates` (triangle `i` of `a`, `j` of `b`; e.g. the box-overlap
-    /// pairs of the hierarchies, [`Collider::box_pairs_bvh`](crate::collider::Collider::box_pairs_bvh))
-    /// that intersect, sorted.
+    /// pairs of the two box trees, which [`Bvh::for_each_pair`](crate::bounding::Bvh::for_each_pair)
+    /// enumerates) that intersect, sorted.
     pub fn intersecting_candidates(
         &self,
         a: &TriMesh,
