@@ -69,6 +69,7 @@ pub mod shape;
 #[cfg(feature = "testing")]
 pub mod testing;
 
+pub use collider::Collider;
 pub use error::Error;
 pub use query::{Intersects, IntersectsWith};
 pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
