@@ -19,20 +19,9 @@ use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
 /// Whether `p` lies in the closed solid bounded by `triangles` (a closed mesh): on a
-/// triangle, or inside by ray parity (see the module docs). Exact.
-///
-/// ```
-/// use cga_collide::nalgebra::Point3;
-/// use cga_collide::query::point_in_solid;
-/// use cga_collide::TriMesh;
-/// let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0))?;
-/// let tris = || (0..cube.num_triangles()).map(|i| cube.triangle(i));
-/// assert!(point_in_solid(tris(), &Point3::new(0.5, 0.5, 0.5)));
-/// assert!(point_in_solid(tris(), &Point3::new(1.0, 0.5, 0.5))); // on the surface
-/// assert!(!point_in_solid(tris(), &Point3::new(1.5, 0.5, 0.5)));
-/// # Ok::<(), cga_collide::Error>(())
-/// ```
-pub fn point_in_solid<I>(triangles: I, p: &Point3<f64>) -> bool
+/// triangle, or inside by ray parity (see the module docs). Exact. For meshes, users call
+/// [`Collider::contains_point`](crate::collider::Collider::contains_point).
+pub(crate) fn point_in_solid<I>(triangles: I, p: &Point3<f64>) -> bool
 where
     I: IntoIterator<Item = [Point3<f64>; 3]>,
 {

@@ -17,7 +17,7 @@ use crate::conformal::Sphere;
 /// assert!(sphere_sphere_filtered(&a, &b)); // a transversal circle: decided in f64
 /// let c = Sphere::from_centre_radius(Point3::new(2.0, 0.0, 0.0), 1.0)?;
 /// assert!(!sphere_sphere_filtered(&a, &c)); // tangency: needs the exact path
-/// # Ok::<(), cga_collide::GeometryError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn sphere_sphere_filtered(a: &Sphere, b: &Sphere) -> bool {
     crate::conformal::meet::sphere_sphere_filtered(a, b)

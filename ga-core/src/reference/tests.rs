@@ -408,6 +408,15 @@ proptest! {
     #[test]
     fn versor_laws_f64((v1, v2, v3, x) in signature_strategy()
         .prop_flat_map(|s| (vector_in::<f64>(&s), vector_in::<f64>(&s), vector_in::<f64>(&s), mv_in::<f64>(&s)))) {
+        // In f64 the inverse of a nearly null vector is ill-conditioned: rounding, not a broken
+        // law, then decides the comparison. The exact twin below covers null and near-null ones.
+        let ill_conditioned = |v: &Dm<f64>| {
+            let q = v.norm_squared().abs();
+            q != 0.0 && q < 1e-3 * magnitude(v).powi(2)
+        };
+        if [&v1, &v2, &v3].into_iter().any(ill_conditioned) {
+            return Ok(());
+        }
         versor_laws(&v1, &v2, &v3, &x)?;
     }
 

@@ -335,8 +335,12 @@ impl TriMesh {
         let offsets = near_one(scaled.iter().map(|v| Point3::from(v - centre)).collect());
         let (lo, hi) = bounds_of(&offsets);
         let side = (hi - lo).max();
-        let scale = if side > 0.0 { 1.0 / side } else { 1.0 };
-        offsets.into_iter().map(|v| v * scale).collect()
+        if side > 0.0 {
+            // One correctly rounded division per coordinate: symmetric offsets stay symmetric.
+            offsets.into_iter().map(|v| v / side).collect()
+        } else {
+            offsets
+        }
     }
 
     /// One step of 1→4 midpoint subdivision: every triangle is split at its edge midpoints
