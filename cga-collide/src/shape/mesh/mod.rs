@@ -335,8 +335,13 @@ impl TriMesh {
         let offsets = near_one(scaled.iter().map(|v| Point3::from(v - centre)).collect());
         let (lo, hi) = bounds_of(&offsets);
         let side = (hi - lo).max();
-        let scale = if side > 0.0 { 1.0 / side } else { 1.0 };
-        offsets.into_iter().map(|v| v * scale).collect()
+        // Divided, not multiplied by `1 / side`: the rounded reciprocal would leave a symmetric
+        // mesh (offsets `±side / 2`) with largest side `1 - 2⁻⁵³` instead of exactly 1.
+        if side > 0.0 {
+            offsets.into_iter().map(|v| v / side).collect()
+        } else {
+            offsets
+        }
     }
 
     /// One step of 1→4 midpoint subdivision: every triangle is split at its edge midpoints
