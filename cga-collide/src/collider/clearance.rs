@@ -54,7 +54,7 @@ impl Collider {
     /// [`pairs_within_distance`](Self::pairs_within_distance).
     pub fn within_distance(&self, other: &Collider, c: f64) -> bool {
         if let Some(answer) = trivial(c) {
-            return answer && true;
+            return answer;
         }
         self.bvh()
             .for_each_pair_where(

@@ -82,6 +82,7 @@ impl Collider {
     /// [`contacts`](Self::contacts) of `self` at `pose_a` and `other` at `pose_b`, in world
     /// coordinates. The meshes are placed first (work proportional to their size per pose):
     /// the exact geometry is computed on the placed triangles.
+    #[allow(clippy::type_complexity)] // the list `contacts` returns, or the error
     pub fn contacts_at(
         &self,
         pose_a: &Isometry3<f64>,

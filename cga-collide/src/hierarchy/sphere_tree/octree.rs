@@ -247,7 +247,7 @@ fn classify(
             |nb| nb.overlaps(b),
             |t| {
                 work.tri_tests += 1;
-                let [p, q, r] = mesh.corners(t as u32);
+                let [p, q, r] = mesh.corners(t);
                 let tri = [[p.x, p.y, p.z], [q.x, q.y, q.z], [r.x, r.y, r.z]];
                 if triangle_meets_box(&tri, &b.min, &b.max) {
                     ControlFlow::Break(())
