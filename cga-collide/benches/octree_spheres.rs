@@ -9,9 +9,9 @@
 
 use std::hint::black_box;
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::nalgebra::{Isometry3, UnitQuaternion, Vector3};
-use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::testing::sphere_tree::paper_method;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

@@ -3,9 +3,9 @@
 
 use std::sync::OnceLock;
 
+use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::shape::polyhedron::{ConvexPolyhedron, PolyhedronError};
 use cga_collide::testing::double_sphere::{
@@ -188,8 +188,7 @@ fn brute(
     }
     let ca = Collider::new(ma.clone());
     let cb = Collider::new(mb.clone());
-    cb.contains_point(&ma.vertices()[0])
-        || ca.contains_point(&mb.vertices()[0])
+    cb.contains_point(&ma.vertices()[0]) || ca.contains_point(&mb.vertices()[0])
 }
 
 fn pose(t: [f64; 3], axis: [f64; 3], angle: f64) -> Isometry3<f64> {

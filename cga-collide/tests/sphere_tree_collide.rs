@@ -6,10 +6,10 @@
 
 use std::sync::OnceLock;
 
+use cga_collide::collider::{Collider, Mode};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
-use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::testing::sphere_tree::{
     self as methods, ball_contains_box, cell_of, triangle_meets_box,
@@ -109,8 +109,9 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
     let tris: Vec<[[f64; 3]; 3]> = (0..mesh.num_triangles())
         .map(|i| mesh.corners(i as u32).map(|p| [p.x, p.y, p.z]))
         .collect();
-    let partial =
-        |b: &cga_collide::bounding::Aabb| tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max));
+    let partial = |b: &cga_collide::bounding::Aabb| {
+        tris.iter().any(|t| triangle_meets_box(t, &b.min, &b.max))
+    };
     let mut level = vec![0u32; tree.len()];
     for i in 0..tree.len() {
         for ch in tree.children(i) {
@@ -125,7 +126,9 @@ fn check_classification(c: &Collider, tree: &SphereTree, side: f64) {
             CellState::Partial
         } else {
             assert!(
-                c.clone().with_mode(Mode::Brute).contains_point(&n.centre.into()),
+                c.clone()
+                    .with_mode(Mode::Brute)
+                    .contains_point(&n.centre.into()),
                 "node {i} is empty"
             );
             CellState::Full
