@@ -169,6 +169,16 @@ pub enum Error {
         limit: f64,
     },
 
+    // ------------------------------------------------------------ scenes
+    /// A scene was asked about an object it does not hold (never added, or removed).
+    #[error("scene object {index} (generation {generation}) is not in the scene: it was removed, or the handle is from another scene")]
+    UnknownObject {
+        /// The handle's slot.
+        index: u32,
+        /// The handle's generation (slots are reused after a removal).
+        generation: u32,
+    },
+
     // ------------------------------------------------------------ batches
     /// One item of a batch has no answer; `index` is its position in the slice.
     #[error("pose {index} of the batch: {source}")]

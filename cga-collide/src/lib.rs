@@ -13,6 +13,7 @@
 //! | [`query`] | operations between two primitives: `intersects_<a>_<b>`, `within_distance_<a>_<b>`, `distance_<a>_<b>` |
 //! | [`bounding`] | how candidates are found: the box tree over a mesh's triangles ([`bounding::Bvh`]) |
 //! | [`collider`] | [`Collider`]: a mesh built once, and every question about it |
+//! | [`scene`] | [`scene::Scene`]: many placed colliders, a broad phase that follows them, exact answers for every pair |
 //! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
 //! | `testing` | test oracles, adversarial inputs, plain-`f64` baselines, brute-force twins (feature `testing`) |
@@ -65,6 +66,7 @@ pub mod gpu;
 pub mod hierarchy;
 mod parallel;
 pub mod query;
+pub mod scene;
 pub mod shape;
 #[cfg(feature = "testing")]
 pub mod testing;

@@ -17,6 +17,7 @@ const LAYERS: &[&str] = &[
     "query",
     "bounding",
     "collider",
+    "scene",
     "hierarchy",
     "gpu",
     "testing",

@@ -493,6 +493,12 @@ impl Collider {
         )
     }
 
+    /// A world box holding this mesh placed at `pose` (conservative: every placed vertex, as
+    /// `placed()` rounds it, lies inside); what a broad phase sorts.
+    pub(crate) fn world_box(&self, pose: &Isometry3<f64>) -> Result<Aabb, Error> {
+        Ok(self.world_boxes(pose)?.world(&self.bvh().bounds()))
+    }
+
     fn world_boxes(&self, pose: &Isometry3<f64>) -> Result<WorldBoxes, Error> {
         let map = PoseMap::new(pose)?;
         map.check_range(self.extent())?;
