@@ -15,6 +15,7 @@ mod placement;
 mod poses;
 mod query;
 mod render;
+mod scene;
 mod self_intersect;
 mod spheretree;
 
@@ -48,11 +49,14 @@ enum Command {
     Distance(distance::DistanceArgs),
     /// Pairs of triangles of one mesh that meet other than in a shared vertex or edge (exact).
     SelfIntersect(self_intersect::SelfIntersectArgs),
+    /// Many objects from a scene file: every pair that touches, or within a clearance (exact).
+    Scene(scene::SceneArgs),
 }
 
 fn run(command: Command) -> Result<()> {
     match command {
         Command::Collide(args) => collide::run(args),
+        Command::Scene(args) => scene::run(args),
         Command::Query(args) => query::run(args),
         Command::Spheretree(args) => spheretree::run(args),
         Command::Experiment(args) => experiment_cmd::run(args),

@@ -1,0 +1,234 @@
+//! `cga scene FILE`: many objects read from a scene file, and every pair that touches (exact).
+//!
+//! The scene file has one object a line: a mesh path (relative to the scene file, or a built-in
+//! name) followed by 6 numbers `rx ry rz tx ty tz` (degrees about x, then y, then z, then a
+//! translation: the `--rotate`/`--translate` convention) or 12 numbers (a row-major 3×4
+//! `[R | t]`). `#` starts a comment; blank lines are skipped. A mesh named on several lines is
+//! loaded and built once and placed many times. Objects are numbered from 0 in line order.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use anyhow::{bail, Context, Result};
+use cga_collide::collider::{pose_from_degrees, Collider};
+use cga_collide::nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion};
+use cga_collide::scene::{ObjectId, Scene};
+use clap::Args;
+use serde_json::json;
+
+use crate::mesh::load_mesh;
+
+/// Every pair of objects of a scene file that touch (exact), or are within a clearance, or the
+/// nearest pair.
+#[derive(Args, Debug)]
+pub struct SceneArgs {
+    /// The scene file: one object a line, `MESH rx ry rz tx ty tz` or `MESH` and a row-major
+    /// 3×4 `[R | t]` (12 numbers); `#` comments.
+    file: PathBuf,
+    /// List the pairs within this distance (exact, closed) instead of the touching ones.
+    #[arg(long, value_name = "C")]
+    clearance: Option<f64>,
+    /// Also find the nearest pair and its certified distance.
+    #[arg(long)]
+    nearest: bool,
+    /// Poses to move every object to (a second scene file with the same objects in the same
+    /// order), then ask again: the time of an update step and its question.
+    #[arg(long, value_name = "FILE")]
+    moved: Option<PathBuf>,
+    /// Objects whose solids overlap count as touching (one inside another; closed meshes).
+    #[arg(long)]
+    solid: bool,
+    /// Repeat each timed step this many times and report the best time.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    repeat: u32,
+    /// Print the result as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+/// One line of a scene file.
+struct Line {
+    mesh: String,
+    pose: Isometry3<f64>,
+}
+
+/// Reads a scene file: its objects in line order.
+fn read(path: &Path) -> Result<Vec<Line>> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read the scene file {name} (check the path)"))?;
+    let mut out = Vec::new();
+    for (k, raw) in text.lines().enumerate() {
+        let line = raw.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let at = format!("{name}:{}", k + 1);
+        let mut words = line.split_whitespace();
+        let mesh = words.next().unwrap_or_default().to_string();
+        let numbers = words
+            .map(|w| {
+                w.parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .with_context(|| format!("{at}: `{w}` is not a finite number"))
+            })
+            .collect::<Result<Vec<f64>>>()?;
+        let pose = match numbers.len() {
+            6 => pose_from_degrees(
+                [numbers[0], numbers[1], numbers[2]],
+                [numbers[3], numbers[4], numbers[5]],
+            ),
+            12 => {
+                let n = &numbers;
+                let m = Matrix3::new(n[0], n[1], n[2], n[4], n[5], n[6], n[8], n[9], n[10]);
+                let rotation = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix(&m));
+                Isometry3::from_parts(Translation3::new(n[3], n[7], n[11]), rotation)
+            }
+            n => bail!(
+                "{at}: expected a mesh then 6 numbers (rx ry rz tx ty tz, degrees) or 12 (a \
+                 row-major 3x4 [R | t]), found {n} numbers"
+            ),
+        };
+        out.push(Line { mesh, pose });
+    }
+    Ok(out)
+}
+
+/// Loads every distinct mesh once (paths relative to the scene file; built-in names as they
+/// are) and builds its collider.
+fn colliders(lines: &[Line], dir: &Path) -> Result<HashMap<String, Arc<Collider>>> {
+    let mut out = HashMap::new();
+    for line in lines {
+        if !out.contains_key(&line.mesh) {
+            let relative = dir.join(&line.mesh);
+            let spec = if relative.exists() {
+                relative.display().to_string()
+            } else {
+                line.mesh.clone()
+            };
+            let mesh = load_mesh(&spec, "")?;
+            out.insert(line.mesh.clone(), Arc::new(Collider::new(mesh)));
+        }
+    }
+    Ok(out)
+}
+
+fn best_of<T>(repeat: u32, mut f: impl FnMut() -> Result<T>) -> Result<(T, Duration)> {
+    let mut best = Duration::MAX;
+    let mut last = None;
+    for _ in 0..repeat {
+        let t = Instant::now();
+        last = Some(f()?);
+        best = best.min(t.elapsed());
+    }
+    Ok((last.context("at least one repetition")?, best))
+}
+
+fn millis(d: Duration) -> f64 {
+    d.as_secs_f64() * 1e3
+}
+
+/// Runs `cga scene`.
+pub fn run(args: SceneArgs) -> Result<()> {
+    let lines = read(&args.file)?;
+    let moved = args.moved.as_deref().map(read).transpose()?;
+    if let Some(m) = &moved {
+        if m.len() != lines.len() {
+            bail!(
+                "--moved {}: {} objects, but the scene has {}: give the same objects in the same \
+                 order",
+                args.moved.as_deref().unwrap_or(Path::new("")).display(),
+                m.len(),
+                lines.len()
+            );
+        }
+    }
+    let dir = args.file.parent().unwrap_or(Path::new("."));
+    let t = Instant::now();
+    let built = colliders(&lines, dir)?;
+    let millis_colliders = millis(t.elapsed());
+    let (scene, millis_build) = best_of(args.repeat, || {
+        let mut scene = Scene::new();
+        scene.set_solid(args.solid);
+        for (k, line) in lines.iter().enumerate() {
+            scene
+                .add(built[&line.mesh].clone(), line.pose)
+                .with_context(|| format!("{}: object {k}", args.file.display()))?;
+        }
+        Ok(scene)
+    })?;
+    let ask = |scene: &Scene| -> Result<Vec<(ObjectId, ObjectId)>> {
+        Ok(match args.clearance {
+            Some(c) => scene.pairs_within_distance(c)?,
+            None => scene.colliding_pairs()?,
+        })
+    };
+    let (pairs, query) = best_of(args.repeat, || ask(&scene))?;
+    let index_pairs = |pairs: &[(ObjectId, ObjectId)]| -> Vec<[u32; 2]> {
+        pairs.iter().map(|(a, b)| [a.index(), b.index()]).collect()
+    };
+    let mut value = json!({
+        "objects": lines.len(),
+        "meshes": built.len(),
+        "pairs": index_pairs(&pairs),
+        "millis_colliders": millis_colliders,
+        "millis_build": millis(millis_build),
+        "millis_query": millis(query),
+    });
+    if let Some(m) = &moved {
+        let ids = scene.ids();
+        let poses: Vec<(ObjectId, Isometry3<f64>)> =
+            ids.iter().zip(m).map(|(&id, l)| (id, l.pose)).collect();
+        let back: Vec<(ObjectId, Isometry3<f64>)> =
+            ids.iter().zip(&lines).map(|(&id, l)| (id, l.pose)).collect();
+        let mut scene = scene.clone();
+        let mut flip = false;
+        let (_, step) = best_of(args.repeat, || {
+            // Alternate between the two pose sets so that every repetition moves every object.
+            flip = !flip;
+            scene.set_poses(if flip { &poses } else { &back })?;
+            ask(&scene)
+        })?;
+        scene.set_poses(&poses)?;
+        value["millis_move_and_query"] = json!(millis(step));
+        value["moved_pairs"] = json!(index_pairs(&ask(&scene)?));
+    }
+    if args.nearest {
+        let (nearest, time) = best_of(args.repeat, || Ok(scene.nearest_pair()?))?;
+        value["millis_nearest"] = json!(millis(time));
+        if let Some((a, b, d)) = nearest {
+            value["nearest"] = json!({
+                "pair": [a.index(), b.index()],
+                "distance": d.distance,
+                "error_bound": d.error_bound,
+            });
+        }
+    }
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&value)?);
+    } else {
+        let what = match args.clearance {
+            Some(c) => format!("within {c}"),
+            None => "touching".into(),
+        };
+        println!(
+            "{}: {} objects ({} meshes), {} pairs {what} (exact; build {:.2} ms, query {:.2} ms)",
+            args.file.display(),
+            lines.len(),
+            built.len(),
+            pairs.len(),
+            value["millis_build"].as_f64().unwrap_or(0.0),
+            value["millis_query"].as_f64().unwrap_or(0.0),
+        );
+        for [a, b] in index_pairs(&pairs) {
+            println!("{a} {b}");
+        }
+        if let Some(n) = value.get("nearest") {
+            println!("nearest {n}");
+        }
+    }
+    Ok(())
+}
