@@ -15,7 +15,7 @@ comment; blank lines are ignored; a mesh named on several lines is loaded once.
 The objects are placed so that the centre of the mesh's bounding box lands uniformly in a
 cube of side k * N^(1/3) * D, where D is the diagonal of the mesh's bounding box, under a
 uniformly random rotation. The density is constant in N, so each object touches about the
-same number of others whatever N is (with the bunny, about 2.7 for the default k and about 9
+same number of others whatever N is (with the bunny, about 2.7 to 2.9 for the default k and about 9
 for --dense); the fraction of touching pairs is a few percent at N = 100 and falls as 1/N.
 
 --separated places the objects so that no two bounding spheres (about the bounding-box
