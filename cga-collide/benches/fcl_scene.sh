@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# FCL's DynamicAABBTreeCollisionManager on scenes of many bunnies (see fcl_scene.cpp and
+# make_scene.py): N = 100, 1000, 10000 copies at the default density, N = 1000 at --dense,
+# and N = 1000 --separated (no touching pair, so the nearest pair is a real distance query).
+# Prints one JSON line per scene. Needs g++, python3 and FCL's headers:
+# `apt-get install libfcl-dev` on Debian (FCL 0.7).
+# Usage: bash cga-collide/benches/fcl_scene.sh [REPEAT]
+# Environment: SCENE_NS (default "100 1000 10000"), KEEP=DIR to keep the scene files there.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+repeat="${1:-5}"
+if [ -n "${KEEP:-}" ]; then
+  work="$KEEP"
+  mkdir -p "$work"
+else
+  work="$(mktemp -d)"
+  trap 'rm -rf "$work"' EXIT
+fi
+if pkg-config --exists fcl 2>/dev/null; then
+  # pkg-config's own -std=c++11 comes first so that -std=c++17 wins.
+  cflags="$(pkg-config --cflags fcl)"
+  libs="$(pkg-config --libs fcl)"
+else
+  cflags="-I/usr/include/eigen3"
+  libs="-lfcl -lccd -lm"
+fi
+# shellcheck disable=SC2086
+g++ -O3 -DNDEBUG $cflags -std=c++17 "$here/fcl_scene.cpp" -o "$work/fcl_scene" $libs
+run() {  # NAME MAKE_SCENE_ARGS...
+  local name="$1"
+  shift
+  python3 "$here/make_scene.py" "$@" -o "$work/$name.txt" --moved "$work/$name.moved.txt"
+  "$work/fcl_scene" "$work/$name.txt" --moved "$work/$name.moved.txt" --repeat "$repeat"
+}
+for n in ${SCENE_NS:-100 1000 10000}; do
+  run "bunnies_$n" --n "$n"
+done
+run bunnies_1000_dense --n 1000 --dense
+run bunnies_1000_separated --n 1000 --separated
