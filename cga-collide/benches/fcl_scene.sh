@@ -4,8 +4,11 @@
 # and N = 1000 --separated (no touching pair, so the nearest pair is a real distance query).
 # Prints one JSON line per scene. Needs g++, python3 and FCL's headers:
 # `apt-get install libfcl-dev` on Debian (FCL 0.7).
+# Then, on the same files in the same run, ours: `cga scene` (exact) on all cores and on one
+# (RAYON_NUM_THREADS=1), one JSON line each, labelled "cga" and "cga_1_thread".
 # Usage: bash cga-collide/benches/fcl_scene.sh [REPEAT]
-# Environment: SCENE_NS (default "100 1000 10000"), KEEP=DIR to keep the scene files there.
+# Environment: SCENE_NS (default "100 1000 10000"), KEEP=DIR to keep the scene files there,
+# CGA=path of the cga binary (default: built here with cargo, release).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 repeat="${1:-5}"
@@ -26,11 +29,27 @@ else
 fi
 # shellcheck disable=SC2086
 g++ -O3 -DNDEBUG $cflags -std=c++17 "$here/fcl_scene.cpp" -o "$work/fcl_scene" $libs
+if [ -z "${CGA:-}" ]; then
+  cargo build --release -q -p cga-cli --bin cga --manifest-path "$here/../../Cargo.toml"
+  CGA="$here/../../target/release/cga"
+fi
+summary() {  # LABEL: our JSON on stdin, one line out, pair lists as counts
+  python3 -c 'import json, sys
+d = json.load(sys.stdin)
+d = {"who": sys.argv[1], **d}
+for k in ("pairs", "moved_pairs"):
+    if k in d:
+        d[k] = len(d[k])
+print(json.dumps(d))' "$1"
+}
 run() {  # NAME MAKE_SCENE_ARGS...
   local name="$1"
   shift
   python3 "$here/make_scene.py" "$@" -o "$work/$name.txt" --moved "$work/$name.moved.txt"
   "$work/fcl_scene" "$work/$name.txt" --moved "$work/$name.moved.txt" --repeat "$repeat"
+  local ours=("$CGA" scene "$work/$name.txt" --moved "$work/$name.moved.txt" --nearest --json --repeat "$repeat")
+  "${ours[@]}" | summary cga
+  RAYON_NUM_THREADS=1 "${ours[@]}" | summary cga_1_thread
 }
 for n in ${SCENE_NS:-100 1000 10000}; do
   run "bunnies_$n" --n "$n"

@@ -182,8 +182,11 @@ pub fn run(args: SceneArgs) -> Result<()> {
         let ids = scene.ids();
         let poses: Vec<(ObjectId, Isometry3<f64>)> =
             ids.iter().zip(m).map(|(&id, l)| (id, l.pose)).collect();
-        let back: Vec<(ObjectId, Isometry3<f64>)> =
-            ids.iter().zip(&lines).map(|(&id, l)| (id, l.pose)).collect();
+        let back: Vec<(ObjectId, Isometry3<f64>)> = ids
+            .iter()
+            .zip(&lines)
+            .map(|(&id, l)| (id, l.pose))
+            .collect();
         let mut scene = scene.clone();
         let mut flip = false;
         let (_, step) = best_of(args.repeat, || {

@@ -90,10 +90,22 @@ impl Scene {
     /// pair. `None` with fewer than two objects that may be paired. Touching objects are at
     /// distance 0: the smallest touching pair is reported.
     pub fn nearest_pair(&self) -> Result<Option<NearestPair>, Error> {
-        // Touching pairs first: their distance is 0, and finding them is cheap.
-        let touching = self.colliding_pairs()?;
-        if let Some(&(a, b)) = touching.first() {
-            return Ok(Some((a, b, self.distance(a.index, b.index)?)));
+        // Touching pairs first: their distance is 0. The smallest touching pair is the first of
+        // the sorted candidates that touches, so the search stops there.
+        let mut overlapping: Vec<(ObjectId, ObjectId, u32, u32)> = self
+            .candidates(0.0)
+            .into_iter()
+            .map(|(a, b)| (self.id_of(a), self.id_of(b), a, b))
+            .collect();
+        overlapping.sort_unstable();
+        let first = overlapping
+            .par_iter()
+            .map(|&(_, _, a, b)| self.touch(a, b).map(|hit| hit.then_some((a, b))))
+            .find_first(|r| !matches!(r, Ok(None)));
+        if let Some(found) = first {
+            if let Some((a, b)) = found? {
+                return Ok(Some((self.id_of(a), self.id_of(b), self.distance(a, b)?)));
+            }
         }
         // A first bound from the pair of neighbours in sweep order with the smallest box gap.
         let order = self.broad.sweep_order();
