@@ -333,3 +333,34 @@ fn segments_handles_and_bad_poses() {
     assert!(scene.nearest_to(c).unwrap().is_some());
     assert!(Scene::new().nearest_pair().unwrap().is_none());
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(4))]
+
+    /// Scenes large enough for the grid broad phase (and a floor far larger than a cell, which
+    /// is tested against every box): the same pairs as brute force.
+    #[test]
+    fn large_scenes_agree_with_brute_force(
+        objs in prop::collection::vec((0usize..3, any_pose()), 300..340),
+        spread in 2.0f64..6.0,
+        c in 0.0f64..0.3,
+    ) {
+        let parts = parts();
+        let floor = Arc::new(Collider::new(
+            TriMesh::cuboid(Point3::new(-20.0, -20.0, -1.0), Point3::new(20.0, 20.0, 0.0)).unwrap(),
+        ));
+        let mut scene = Scene::new();
+        for (k, pose) in &objs {
+            let mut pose = *pose;
+            pose.translation.vector *= spread; // from packed to sparse
+            scene.add(parts[*k].clone(), pose).unwrap();
+        }
+        scene.add(floor.clone(), Isometry3::identity()).unwrap();
+        scene.add(floor, Isometry3::translation(0.0, 0.0, -0.5)).unwrap();
+        prop_assert_eq!(scene.colliding_pairs().unwrap(), touching(&scene));
+        prop_assert_eq!(
+            scene.pairs_within_distance(c).unwrap(),
+            brute(&scene, |a, pa, b, pb| a.within_distance_at(pa, b, pb, c).unwrap())
+        );
+    }
+}

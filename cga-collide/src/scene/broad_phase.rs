@@ -10,6 +10,11 @@ use std::sync::{Mutex, MutexGuard, PoisonError};
 
 use crate::bounding::Aabb;
 
+/// From this many objects on, pairs come from a grid rather than a sweep.
+const GRID_FROM: usize = 256;
+/// A box spanning more cells than this is tested against every box instead of hashed.
+const MAX_CELLS: i64 = 64;
+
 /// The broad phase of a scene: for each live slot, its world box; the live slots in order of
 /// the boxes' lower `x`. The order is sorted lazily, by the first question after a move, so
 /// questions take `&self`; the lock is held only by that sort and the sweep.
@@ -84,14 +89,119 @@ impl SweepAndPrune {
     }
 
     /// Every pair of live slots `(a, b)`, `a < b`, whose boxes come within `reach` of each other
-    /// on every axis (`reach = 0`: the boxes overlap, touching counts).
+    /// on every axis (`reach = 0`: the boxes overlap, touching counts), in no set order.
+    ///
+    /// Small scenes are swept along `x`. Larger ones are hashed into a uniform grid of cells as
+    /// large as a typical box (the median of the boxes' largest sides, plus `reach`): a pair is
+    /// a candidate only in the cell where both boxes start, so each is met once, and the work
+    /// per object stays flat as the scene grows (a sweep along one axis meets a number of
+    /// `x`-overlapping boxes per object that grows like `N^(2/3)` at a fixed density). Boxes
+    /// much larger than a cell (a floor under many parts) are tested against every box instead.
     pub(crate) fn pairs(&self, reach: f64) -> Vec<(u32, u32)> {
-        let order = self.sorted();
+        let live = self.sorted().slots.clone();
+        if live.len() < GRID_FROM || !reach.is_finite() {
+            return self.sweep_pairs(&live, reach);
+        }
+        let mut sides: Vec<f64> = live
+            .iter()
+            .map(|&s| {
+                let b = &self.boxes[s as usize];
+                (0..3).map(|k| b.max[k] - b.min[k]).fold(0.0, f64::max)
+            })
+            .collect();
+        let middle = sides.len() / 2;
+        let (_, median, _) = sides.select_nth_unstable_by(middle, f64::total_cmp);
+        let h = *median + reach;
+        if !(h > 0.0 && h.is_finite()) {
+            return self.sweep_pairs(&live, reach);
+        }
+        // Cell coordinates are monotone in the coordinate (a rounded division, a floor and a
+        // saturating conversion), so boxes that overlap once widened by `reach` on their lower
+        // sides share the cell where the later-starting one starts, on every axis.
+        let cell = |x: f64| (x / h).floor() as i64;
+        let range = |b: &Aabb| -> ([i64; 3], [i64; 3]) {
+            (
+                [0, 1, 2].map(|k| cell(b.min[k] - reach)),
+                [0, 1, 2].map(|k| cell(b.max[k])),
+            )
+        };
+        let mut entries: Vec<([i64; 3], u32)> = Vec::with_capacity(live.len() * 8);
+        let mut large = Vec::new();
+        let mut starts: Vec<[i64; 3]> = vec![[0; 3]; self.boxes.len()];
+        for &s in &live {
+            let (lo, hi) = range(&self.boxes[s as usize]);
+            let span = (0..3).map(|k| hi[k].saturating_sub(lo[k]).saturating_add(1));
+            if span.fold(1i64, |n, d| n.saturating_mul(d)) > MAX_CELLS {
+                large.push(s);
+                continue;
+            }
+            starts[s as usize] = lo;
+            for x in lo[0]..=hi[0] {
+                for y in lo[1]..=hi[1] {
+                    for z in lo[2]..=hi[2] {
+                        entries.push(([x, y, z], s));
+                    }
+                }
+            }
+        }
+        entries.sort_unstable();
         let mut out = Vec::new();
-        for (k, &a) in order.slots.iter().enumerate() {
+        for run in entries.chunk_by(|x, y| x.0 == y.0) {
+            let here = run[0].0;
+            for (k, &(_, a)) in run.iter().enumerate() {
+                for &(_, b) in &run[k + 1..] {
+                    let (sa, sb) = (starts[a as usize], starts[b as usize]);
+                    let first = [0, 1, 2].map(|i| sa[i].max(sb[i]));
+                    if first == here
+                        && near(&self.boxes[a as usize], &self.boxes[b as usize], reach)
+                    {
+                        out.push((a.min(b), a.max(b)));
+                    }
+                }
+            }
+        }
+        for (k, &a) in large.iter().enumerate() {
+            let ba = &self.boxes[a as usize];
+            for &b in live.iter().filter(|&&b| b != a) {
+                let is_large_before = large[..k].contains(&b);
+                if !is_large_before && near(ba, &self.boxes[b as usize], reach) {
+                    out.push((a.min(b), a.max(b)));
+                }
+            }
+        }
+        out
+    }
+
+    /// The first pair met by a sweep along `x` whose boxes overlap and for which `accept` holds
+    /// (an error from `accept` stops the sweep and is returned).
+    pub(crate) fn first_pair<E>(
+        &self,
+        mut accept: impl FnMut(u32, u32) -> Result<bool, E>,
+    ) -> Result<Option<(u32, u32)>, E> {
+        let order = self.sorted().slots.clone();
+        for (k, &a) in order.iter().enumerate() {
+            let ba = &self.boxes[a as usize];
+            for &b in &order[k + 1..] {
+                let bb = &self.boxes[b as usize];
+                if bb.min[0] > ba.max[0] {
+                    break;
+                }
+                let (x, y) = (a.min(b), a.max(b));
+                if near(ba, bb, 0.0) && accept(x, y)? {
+                    return Ok(Some((x, y)));
+                }
+            }
+        }
+        Ok(None)
+    }
+
+    /// [`pairs`](Self::pairs) by one sweep along `x` over the sorted slots.
+    fn sweep_pairs(&self, order: &[u32], reach: f64) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for (k, &a) in order.iter().enumerate() {
             let ba = &self.boxes[a as usize];
             let limit = ba.max[0] + reach;
-            for &b in &order.slots[k + 1..] {
+            for &b in &order[k + 1..] {
                 let bb = &self.boxes[b as usize];
                 if bb.min[0] > limit {
                     break;

@@ -88,24 +88,16 @@ impl Scene {
     /// The nearest pair of objects (surfaces) and its certified distance: among the pairs the
     /// search cannot prove farther, the one with the least `f64` distance, ties to the smaller
     /// pair. `None` with fewer than two objects that may be paired. Touching objects are at
-    /// distance 0: the smallest touching pair is reported.
+    /// distance 0: when some touch, the first touching pair the broad phase's sweep meets is
+    /// reported (a nearest pair; the search stops there).
     pub fn nearest_pair(&self) -> Result<Option<NearestPair>, Error> {
-        // Touching pairs first: their distance is 0. The smallest touching pair is the first of
-        // the sorted candidates that touches, so the search stops there.
-        let mut overlapping: Vec<(ObjectId, ObjectId, u32, u32)> = self
-            .candidates(0.0)
-            .into_iter()
-            .map(|(a, b)| (self.id_of(a), self.id_of(b), a, b))
-            .collect();
-        overlapping.sort_unstable();
-        let first = overlapping
-            .par_iter()
-            .map(|&(_, _, a, b)| self.touch(a, b).map(|hit| hit.then_some((a, b))))
-            .find_first(|r| !matches!(r, Ok(None)));
-        if let Some(found) = first {
-            if let Some((a, b)) = found? {
-                return Ok(Some((self.id_of(a), self.id_of(b), self.distance(a, b)?)));
-            }
+        // Touching pairs first: their distance is 0, so the first touching pair the sweep meets
+        // is a nearest pair, and the search stops there.
+        if let Some((a, b)) = self
+            .broad
+            .first_pair(|a, b| Ok::<bool, Error>(self.tested(a, b) && self.touch(a, b)?))?
+        {
+            return Ok(Some((self.id_of(a), self.id_of(b), self.distance(a, b)?)));
         }
         // A first bound from the pair of neighbours in sweep order with the smallest box gap.
         let order = self.broad.sweep_order();
