@@ -505,27 +505,6 @@ impl Collider {
         Ok(WorldBoxes::new(&map, self.extent()))
     }
 
-    /// The first intersecting triangle pair `(i, j)` that [`collides_at`](Self::collides_at)
-    /// meets (the same traversal, stopped there), or `None` when the placed meshes do not touch.
-    pub(crate) fn first_contact_at(
-        &self,
-        pose_a: &Isometry3<f64>,
-        other: &Collider,
-        pose_b: &Isometry3<f64>,
-    ) -> Result<Option<(u32, u32)>, Error> {
-        if self.mode() == Mode::Brute {
-            let (a, b) = self.placed_pair(pose_a, other, pose_b)?;
-            return Ok(a.intersecting_pairs(&b).first().copied());
-        }
-        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        Ok(
-            match pair.run(&[(0, 0)], |i, j| ControlFlow::Break((i, j))) {
-                ControlFlow::Break(found) => Some(found),
-                ControlFlow::Continue(()) => None,
-            },
-        )
-    }
-
     /// Both meshes placed by their poses, for [`Mode::Brute`]. The poses are checked first
     /// exactly as the tree path checks them, so both modes refuse the same poses.
     pub(crate) fn placed_pair(

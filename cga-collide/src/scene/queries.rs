@@ -1,15 +1,15 @@
 //! The questions a [`Scene`] answers: the broad phase proposes pairs (or objects), and each is
 //! decided exactly by the colliders' pose queries, over the cores.
 
-use nalgebra::{Isometry3, Point3};
+use nalgebra::Isometry3;
 
 use super::broad_phase::box_gap;
 use super::{ObjectId, Scene};
 use crate::collider::Collider;
 use crate::error::Error;
 use crate::parallel::*;
-use crate::query::{triangle_intersection, CertifiedDistance};
-use crate::{Segment, Triangle};
+use crate::query::CertifiedDistance;
+use crate::Segment;
 
 /// A pair of objects with their certified distance.
 pub type NearestPair = (ObjectId, ObjectId, CertifiedDistance);
@@ -92,22 +92,12 @@ impl Scene {
     /// reported (a nearest pair; the search stops there).
     pub fn nearest_pair(&self) -> Result<Option<NearestPair>, Error> {
         // Touching pairs first: their distance is 0, so the first touching pair the sweep meets
-        // is a nearest pair, and the search stops there. Its distance is certified by the exact
-        // intersection of the first intersecting triangle pair: 0, with a common point.
-        let mut contact = None;
-        let found = self.broad.first_pair(|a, b| {
-            if !self.tested(a, b) {
-                return Ok::<bool, Error>(false);
-            }
-            let (x, y) = (self.slot(a), self.slot(b));
-            contact = x.collider.first_contact_at(&x.pose, &y.collider, &y.pose)?;
-            Ok(contact.is_some())
-        })?;
-        if let (Some((a, b)), Some(triangles)) = (found, contact) {
-            let d = self
-                .touching_distance(a, b, triangles)
-                .map_or_else(|| self.distance(a, b), Ok)?;
-            return Ok(Some((self.id_of(a), self.id_of(b), d)));
+        // is a nearest pair, and the search stops there.
+        if let Some((a, b)) = self
+            .broad
+            .first_pair(|a, b| Ok::<bool, Error>(self.tested(a, b) && self.touch(a, b)?))?
+        {
+            return Ok(Some((self.id_of(a), self.id_of(b), self.distance(a, b)?)));
         }
         // A first bound from the pair of neighbours in sweep order with the smallest box gap.
         let order = self.broad.sweep_order();
@@ -214,31 +204,6 @@ impl Scene {
         } else {
             x.collider.collides_at(&x.pose, &y.collider, &y.pose)
         }
-    }
-
-    /// Distance 0 for two objects whose triangles `(i, j)` intersect, with a common point of the
-    /// two placed triangles (exact, rounded to `f64`) as both witnesses. `None` if the placed
-    /// triangles cannot be formed (never for poses the scene accepted).
-    fn touching_distance(&self, a: u32, b: u32, (i, j): (u32, u32)) -> Option<CertifiedDistance> {
-        let (x, y) = (self.slot(a), self.slot(b));
-        // Placed by the expression `placed()` uses, so these are the triangles that met.
-        let place = |o: &super::Object, k: u32| {
-            let [p, q, r] = o.collider.mesh().corners(k).map(|v| o.pose * v);
-            Triangle::new(p, q, r).ok()
-        };
-        let (ta, tb) = (place(x, i)?, place(y, j)?);
-        let point = triangle_intersection(&ta, &tb)?
-            .points_f64()
-            .first()
-            .copied()?;
-        let witness = Point3::from(point);
-        Some(CertifiedDistance {
-            distance: 0.0,
-            error_bound: 0.0,
-            witness_a: witness,
-            witness_b: witness,
-            triangles: Some((i, j)),
-        })
     }
 
     fn distance(&self, a: u32, b: u32) -> Result<CertifiedDistance, Error> {
