@@ -248,6 +248,10 @@ fn stacked_boxes_and_shared_faces() {
     assert_eq!(scene.colliding_pairs().unwrap(), want);
     assert_eq!(touching(&scene), want);
     assert_eq!(scene.colliding_with(far).unwrap(), vec![]);
+    // Touching objects: a nearest pair at distance 0, certified.
+    let (p, q, dist) = scene.nearest_pair().unwrap().expect("objects");
+    assert!(want.contains(&(p, q)), "{p:?} {q:?}");
+    assert_eq!((dist.distance, dist.error_bound), (0.0, 0.0));
     // Excluded pairs and groups.
     scene.exclude_pair(b, a).unwrap();
     // d is alone in group 2 and meets only group 2; the column is group 1 and meets group 1.
