@@ -287,6 +287,13 @@ impl Collider {
     pub(crate) fn tri_box(&self, i: usize) -> Aabb {
         triangle_box(self.mesh.vertices(), &self.mesh.triangles()[i])
     }
+
+    /// The exact box of every triangle, in order (what the brute-force pair scans compare).
+    pub(crate) fn triangle_boxes(&self) -> Vec<Aabb> {
+        (0..self.mesh.num_triangles())
+            .map(|j| self.tri_box(j))
+            .collect()
+    }
 }
 
 #[cfg(test)]

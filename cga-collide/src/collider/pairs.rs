@@ -2,7 +2,6 @@
 
 use std::ops::ControlFlow;
 
-use crate::bounding::Aabb;
 use crate::collider::{Collider, Mode};
 use crate::parallel::*;
 use crate::Intersects;
@@ -13,9 +12,7 @@ impl Collider {
     pub fn intersecting_pairs(&self, other: &Collider) -> Vec<(u32, u32)> {
         let mut out = match self.mode {
             Mode::Brute => {
-                let other_boxes: Vec<Aabb> = (0..other.mesh.num_triangles())
-                    .map(|j| other.tri_box(j))
-                    .collect();
+                let other_boxes = other.triangle_boxes();
                 (0..self.mesh.num_triangles())
                     .into_par_iter()
                     .flat_map_iter(|i| {
@@ -49,9 +46,7 @@ impl Collider {
     pub fn collides(&self, other: &Collider) -> bool {
         match self.mode {
             Mode::Brute => {
-                let other_boxes: Vec<Aabb> = (0..other.mesh.num_triangles())
-                    .map(|j| other.tri_box(j))
-                    .collect();
+                let other_boxes = other.triangle_boxes();
                 (0..self.mesh.num_triangles()).into_par_iter().any(|i| {
                     let bi = self.tri_box(i);
                     let ti = self.triangle(i as u32);
@@ -77,9 +72,7 @@ impl Collider {
     /// enumeration is tested against), sorted.
     #[cfg(any(test, feature = "testing"))]
     pub fn box_pairs_brute(&self, other: &Collider) -> Vec<(u32, u32)> {
-        let other_boxes: Vec<Aabb> = (0..other.mesh.num_triangles())
-            .map(|j| other.tri_box(j))
-            .collect();
+        let other_boxes = other.triangle_boxes();
         (0..self.mesh.num_triangles())
             .into_par_iter()
             .flat_map_iter(|i| {
