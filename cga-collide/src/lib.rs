@@ -13,6 +13,7 @@
 //! | [`query`] | operations between two primitives: `intersects_<a>_<b>`, `within_distance_<a>_<b>`, `distance_<a>_<b>` |
 //! | [`bounding`] | how candidates are found: the box tree over a mesh's triangles ([`bounding::Bvh`]) |
 //! | [`collider`] | [`Collider`]: a mesh built once, and every question about it |
+//! | [`motion`] | continuous collision: vertex–face and edge–edge contact while points move between two poses, exactly, and the first contact time |
 //! | [`scene`] | [`scene::Scene`]: many placed colliders, a broad phase that follows them, exact answers for every pair |
 //! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
@@ -64,6 +65,7 @@ pub mod exact;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod hierarchy;
+pub mod motion;
 mod parallel;
 pub mod query;
 pub mod scene;

@@ -17,6 +17,7 @@ const LAYERS: &[&str] = &[
     "query",
     "bounding",
     "collider",
+    "motion",
     "scene",
     "hierarchy",
     "gpu",

@@ -1,0 +1,282 @@
+//! The `f64` filter: decides most queries with interval arithmetic over sub-intervals of time,
+//! and says when it cannot.
+//!
+//! On a time interval `T`, every coordinate of a moving point lies between its values at the
+//! two ends of `T`; from those boxes, outward-rounded interval arithmetic encloses the
+//! coplanarity polynomial `f` and the in-plane conditions `gᵢ` (the same polynomials the exact
+//! decision uses, see [`super::algebraic`]) over all of `T`. Then, exactly for the real inputs:
+//! - `0 ∉ f(T)`, or some `gᵢ(T) < 0`: no contact during `T` (at a coplanar instant with every
+//!   `gᵢ ≥ 0` violated, the point is outside, or `n ≠ 0` and the edges miss);
+//! - `f` has strictly opposite signs at the two ends of `T` and every `gᵢ(T) > 0`: a root of `f`
+//!   lies inside `T` and at it the primitives touch (strictly inside, so `n ≠ 0`).
+//!
+//! Intervals are visited in increasing time, depth first, so the first interval found to hold a
+//! contact holds the earliest one, and its ends (where `f ≠ 0`) are not contact times. Anything
+//! else is split, up to a budget; a non-finite bound (overflow) or an exhausted budget returns
+//! [`Filtered::Unknown`] and the caller decides exactly.
+
+/// An interval of reals with `f64` ends, rounded outward by every operation.
+#[derive(Clone, Copy, Debug)]
+struct Iv {
+    lo: f64,
+    hi: f64,
+}
+
+impl Iv {
+    fn point(x: f64) -> Iv {
+        Iv { lo: x, hi: x }
+    }
+    fn hull(a: Iv, b: Iv) -> Iv {
+        Iv {
+            lo: a.lo.min(b.lo),
+            hi: a.hi.max(b.hi),
+        }
+    }
+    fn add(self, o: Iv) -> Iv {
+        Iv {
+            lo: (self.lo + o.lo).next_down(),
+            hi: (self.hi + o.hi).next_up(),
+        }
+    }
+    fn sub(self, o: Iv) -> Iv {
+        Iv {
+            lo: (self.lo - o.hi).next_down(),
+            hi: (self.hi - o.lo).next_up(),
+        }
+    }
+    fn mul(self, o: Iv) -> Iv {
+        let (a, b, c, d) = (
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        );
+        Iv {
+            lo: a.min(b).min(c).min(d).next_down(),
+            hi: a.max(b).max(c).max(d).next_up(),
+        }
+    }
+    /// Strictly positive (a NaN bound is never positive).
+    fn positive(self) -> bool {
+        self.lo > 0.0
+    }
+    fn negative(self) -> bool {
+        self.hi < 0.0
+    }
+    fn finite(self) -> bool {
+        self.lo.is_finite() && self.hi.is_finite()
+    }
+}
+
+type V = [Iv; 3];
+
+fn sub(a: &V, b: &V) -> V {
+    [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])]
+}
+fn cross(a: &V, b: &V) -> V {
+    [
+        a[1].mul(b[2]).sub(a[2].mul(b[1])),
+        a[2].mul(b[0]).sub(a[0].mul(b[2])),
+        a[0].mul(b[1]).sub(a[1].mul(b[0])),
+    ]
+}
+fn dot(a: &V, b: &V) -> Iv {
+    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
+}
+
+/// The position of a point moving from `p[0]` to `p[1]` at time `t`, enclosed.
+fn at(p: &[[f64; 3]; 2], t: f64) -> V {
+    let t = Iv::point(t);
+    let one_minus = Iv::point(1.0).sub(t);
+    core::array::from_fn(|i| {
+        one_minus
+            .mul(Iv::point(p[0][i]))
+            .add(t.mul(Iv::point(p[1][i])))
+    })
+}
+
+/// The box swept by the point during `[t0, t1]`.
+fn during(p: &[[f64; 3]; 2], t0: f64, t1: f64) -> V {
+    let (a, b) = (at(p, t0), at(p, t1));
+    core::array::from_fn(|i| Iv::hull(a[i], b[i]))
+}
+
+/// What the filter found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Filtered {
+    /// No contact for any `t ∈ [0, 1]`.
+    Never,
+    /// The earliest contact is strictly inside `(lo, hi)`.
+    Within(f64, f64),
+    /// The filter cannot decide.
+    Unknown,
+}
+
+/// The in-plane conditions over a time interval.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Side {
+    /// Some condition is certainly negative: no contact at any coplanar instant.
+    Outside,
+    /// Every condition is certainly positive.
+    Inside,
+    /// Neither.
+    Unsure,
+}
+
+/// Folds one condition `g ≥ 0` into the side found so far (`None`: overflow).
+fn fold(side: Option<Side>, g: Iv) -> Option<Side> {
+    let side = side?;
+    if !g.finite() {
+        return None;
+    }
+    Some(match side {
+        Side::Outside => Side::Outside,
+        _ if g.negative() => Side::Outside,
+        Side::Inside if g.positive() => Side::Inside,
+        _ => Side::Unsure,
+    })
+}
+
+/// What a query is, for the filter: the coplanarity polynomial and the in-plane conditions on
+/// boxes of positions.
+trait Conditions<const N: usize> {
+    /// `f` on the boxes.
+    fn coplanarity(x: &[V; N]) -> Iv;
+    /// The conditions `gᵢ ≥ 0` on the boxes.
+    fn side(x: &[V; N]) -> Option<Side>;
+}
+
+/// Vertex `p` against triangle `abc`.
+pub(crate) struct VertexFace;
+
+impl Conditions<4> for VertexFace {
+    fn coplanarity(x: &[V; 4]) -> Iv {
+        let [p, a, b, c] = x;
+        dot(&cross(&sub(b, a), &sub(c, a)), &sub(p, a))
+    }
+    fn side(x: &[V; 4]) -> Option<Side> {
+        let [p, a, b, c] = x;
+        let n = cross(&sub(b, a), &sub(c, a));
+        [(a, b), (b, c), (c, a)]
+            .iter()
+            .fold(Some(Side::Inside), |side, (u, v)| {
+                fold(side, dot(&cross(&sub(v, u), &sub(p, u)), &n))
+            })
+    }
+}
+
+/// Edge `a0 a1` against edge `b0 b1`.
+pub(crate) struct EdgeEdge;
+
+impl Conditions<4> for EdgeEdge {
+    fn coplanarity(x: &[V; 4]) -> Iv {
+        let [a0, a1, b0, b1] = x;
+        dot(&cross(&sub(a1, a0), &sub(b1, b0)), &sub(b0, a0))
+    }
+    fn side(x: &[V; 4]) -> Option<Side> {
+        let [a0, a1, b0, b1] = x;
+        let (ea, eb, d) = (sub(a1, a0), sub(b1, b0), sub(b0, a0));
+        let n = cross(&ea, &eb);
+        let nn = dot(&n, &n);
+        let u = dot(&cross(&d, &eb), &n);
+        let v = dot(&cross(&d, &ea), &n);
+        [u, nn.sub(u), v, nn.sub(v)]
+            .into_iter()
+            .fold(Some(Side::Inside), fold)
+    }
+}
+
+/// Whether the swept boxes of the first point and of the other three are disjoint (exact:
+/// only comparisons of the inputs).
+fn boxes_apart(points: &[[[f64; 3]; 2]; 4]) -> bool {
+    (0..3).any(|i| {
+        let lo = |p: &[[f64; 3]; 2]| p[0][i].min(p[1][i]);
+        let hi = |p: &[[f64; 3]; 2]| p[0][i].max(p[1][i]);
+        let (first, rest) = points.split_first().expect("four points");
+        let rest_lo = rest.iter().map(lo).fold(f64::INFINITY, f64::min);
+        let rest_hi = rest.iter().map(hi).fold(f64::NEG_INFINITY, f64::max);
+        hi(first) < rest_lo || lo(first) > rest_hi
+    })
+}
+
+/// Whether the swept boxes of the two edges are disjoint.
+fn edge_boxes_apart(points: &[[[f64; 3]; 2]; 4]) -> bool {
+    (0..3).any(|i| {
+        let lo = |p: &[[f64; 3]; 2]| p[0][i].min(p[1][i]);
+        let hi = |p: &[[f64; 3]; 2]| p[0][i].max(p[1][i]);
+        let a_lo = lo(&points[0]).min(lo(&points[1]));
+        let a_hi = hi(&points[0]).max(hi(&points[1]));
+        let b_lo = lo(&points[2]).min(lo(&points[3]));
+        let b_hi = hi(&points[2]).max(hi(&points[3]));
+        a_hi < b_lo || a_lo > b_hi
+    })
+}
+
+/// How many time intervals the filter may look at before giving up.
+const BUDGET: usize = 64;
+
+/// The narrowest time interval the filter splits when it cannot decide on it (contact at an
+/// end of the step, or an exact zero, is left to the exact decision early).
+const NARROWEST: f64 = 1.0 / 65536.0;
+
+/// The filter for a query of kind `C`. `tolerance`: the width at which a contact interval is
+/// accepted (`f64::INFINITY` when only whether they touch is asked).
+fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
+    let mut stack = vec![(0.0f64, 1.0f64)];
+    let mut visited = 0;
+    while let Some((t0, t1)) = stack.pop() {
+        visited += 1;
+        if visited > BUDGET {
+            return Filtered::Unknown;
+        }
+        let boxes: [V; 4] = core::array::from_fn(|i| during(&points[i], t0, t1));
+        let f = C::coplanarity(&boxes);
+        if !f.finite() {
+            return Filtered::Unknown;
+        }
+        if f.positive() || f.negative() {
+            continue;
+        }
+        let side = match C::side(&boxes) {
+            None => return Filtered::Unknown,
+            Some(side) => side,
+        };
+        if side == Side::Outside {
+            continue;
+        }
+        if side == Side::Inside {
+            let ends = |t: f64| C::coplanarity(&core::array::from_fn(|i| at(&points[i], t)));
+            let (f0, f1) = (ends(t0), ends(t1));
+            let crossing = (f0.positive() && f1.negative()) || (f0.negative() && f1.positive());
+            if crossing && t1 - t0 <= tolerance {
+                return Filtered::Within(t0, t1);
+            }
+        }
+        let mid = 0.5 * (t0 + t1);
+        if side != Side::Inside && t1 - t0 < NARROWEST {
+            return Filtered::Unknown;
+        }
+        if !(t0 < mid && mid < t1) {
+            return Filtered::Unknown;
+        }
+        stack.push((mid, t1));
+        stack.push((t0, mid));
+    }
+    Filtered::Never
+}
+
+/// The filter for vertex `points[0]` against triangle `points[1..4]`.
+pub(crate) fn vertex_face(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
+    if boxes_apart(points) {
+        return Filtered::Never;
+    }
+    search::<VertexFace>(points, tolerance)
+}
+
+/// The filter for edge `points[0..2]` against edge `points[2..4]`.
+pub(crate) fn edge_edge(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
+    if edge_boxes_apart(points) {
+        return Filtered::Never;
+    }
+    search::<EdgeEdge>(points, tolerance)
+}
