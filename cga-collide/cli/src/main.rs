@@ -5,6 +5,7 @@
 //! its arguments and its `run`; this file parses, dispatches and reports errors.
 
 mod args;
+mod ccd;
 mod collide;
 mod device;
 mod distance;
@@ -49,6 +50,8 @@ enum Command {
     Distance(distance::DistanceArgs),
     /// Pairs of triangles of one mesh that meet other than in a shared vertex or edge (exact).
     SelfIntersect(self_intersect::SelfIntersectArgs),
+    /// Continuous collision (motion between two poses), exact: the CCD benchmark's query files.
+    Ccd(ccd::CcdArgs),
     /// Many objects from a scene file: every pair that touches, or within a clearance (exact).
     Scene(scene::SceneArgs),
 }
@@ -57,6 +60,7 @@ fn run(command: Command) -> Result<()> {
     match command {
         Command::Collide(args) => collide::run(args),
         Command::Scene(args) => scene::run(args),
+        Command::Ccd(args) => ccd::run(args),
         Command::Query(args) => query::run(args),
         Command::Spheretree(args) => spheretree::run(args),
         Command::Experiment(args) => experiment_cmd::run(args),
