@@ -21,8 +21,7 @@ use core::cmp::Ordering;
 use std::rc::Rc;
 
 use num_bigint::{BigInt, Sign};
-use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 
 /// A polynomial `Σ c[i] tⁱ` with integer coefficients, without trailing zero coefficients
 /// (the zero polynomial has none).
@@ -108,16 +107,19 @@ impl Poly {
         )
     }
 
-    /// The polynomial divided by the gcd of its coefficients (a positive number).
+    /// The polynomial divided by the largest power of two dividing every coefficient (a
+    /// positive factor; a full gcd costs more than the smaller numbers save at these degrees).
     fn primitive(self) -> Poly {
-        let g = self
+        let shift = self
             .0
             .iter()
-            .fold(BigInt::zero(), |g, c| if g.is_one() { g } else { g.gcd(c) });
-        if g.is_zero() || g.is_one() {
+            .filter_map(|c| c.trailing_zeros())
+            .min()
+            .unwrap_or(0);
+        if shift == 0 {
             self
         } else {
-            Poly(self.0.into_iter().map(|c| c / &g).collect())
+            Poly(self.0.into_iter().map(|c| c >> shift as usize).collect())
         }
     }
 
@@ -201,8 +203,48 @@ impl Poly {
         }
     }
 
-    /// The sign of the polynomial at the dyadic `x`.
+    /// The sign of the polynomial at the dyadic `x`: by `f64` interval arithmetic when that
+    /// decides, else exactly.
     pub(crate) fn sign_at(&self, x: &Dyadic) -> Ordering {
+        let point = x.f64_bounds();
+        if let Some(s) = self.interval_sign(point) {
+            return s;
+        }
+        self.exact_sign_at(x)
+    }
+
+    /// The sign on all of `[lo, hi]` when `f64` interval arithmetic proves it (`None`: not
+    /// proved, or a coefficient beyond the `f64` range).
+    pub(crate) fn interval_sign(&self, (lo, hi): (f64, f64)) -> Option<Ordering> {
+        let Some((last, rest)) = self.0.split_last() else {
+            return Some(Ordering::Equal);
+        };
+        let coefficient = |c: &BigInt| {
+            let v = c.to_f64()?;
+            v.is_finite().then(|| (v.next_down(), v.next_up()))
+        };
+        let mut acc = coefficient(last)?;
+        for c in rest.iter().rev() {
+            let products = [acc.0 * lo, acc.0 * hi, acc.1 * lo, acc.1 * hi];
+            let (c_lo, c_hi) = coefficient(c)?;
+            let p_lo = products.iter().copied().fold(f64::INFINITY, f64::min);
+            let p_hi = products.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            acc = (
+                (p_lo.next_down() + c_lo).next_down(),
+                (p_hi.next_up() + c_hi).next_up(),
+            );
+        }
+        if acc.0 > 0.0 && acc.0.is_finite() && acc.1.is_finite() {
+            Some(Ordering::Greater)
+        } else if acc.1 < 0.0 && acc.0.is_finite() && acc.1.is_finite() {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
+
+    /// The sign of the polynomial at the dyadic `x`, exactly.
+    fn exact_sign_at(&self, x: &Dyadic) -> Ordering {
         // Σ c_i nⁱ 2^{k(d−i)} has the sign of Σ c_i (n/2^k)ⁱ.
         let Some((last, rest)) = self.0.split_last() else {
             return Ordering::Equal;
@@ -258,6 +300,15 @@ impl Dyadic {
         self.num >>= tz as usize;
         self.exp -= tz as u32;
         self
+    }
+
+    /// `f64` bounds `lo <= self <= hi` (equal when `self` is an `f64`).
+    pub(crate) fn f64_bounds(&self) -> (f64, f64) {
+        if self.num.bits() <= 53 && self.exp < 1000 {
+            let v = self.num.to_f64().unwrap_or(0.0) * 2f64.powi(-(self.exp as i32));
+            return (v, v);
+        }
+        (self.to_f64_directed(false), self.to_f64_directed(true))
     }
 
     /// The nearest `f64` at or below (`up == false`) or at or above (`up == true`).
@@ -383,8 +434,24 @@ impl Instant {
                 if g.is_zero() {
                     return Ordering::Equal;
                 }
+                // Cheap first: g's sign on a few bisections of the isolating interval (the
+                // root is simple, so `h` changes sign across it).
+                let (mut lo, mut hi) = (lo.clone(), hi.clone());
+                let h_lo = system.h.sign_at(&lo);
+                for _ in 0..6 {
+                    let bounds = (lo.f64_bounds().0, hi.f64_bounds().1);
+                    if let Some(s) = g.interval_sign(bounds) {
+                        return s;
+                    }
+                    let mid = lo.midpoint(&hi);
+                    match system.h.sign_at(&mid) {
+                        Ordering::Equal => return g.sign_at(&mid),
+                        s if s == h_lo => lo = mid,
+                        _ => hi = mid,
+                    }
+                }
                 let seq = system.h.signed_remainders(&system.dh.mul(g));
-                let v = variations(&seq, lo) as i64 - variations(&seq, hi) as i64;
+                let v = variations(&seq, &lo) as i64 - variations(&seq, &hi) as i64;
                 v.cmp(&0)
             }
         }
