@@ -149,6 +149,15 @@ pub enum Error {
         expected: String,
     },
 
+    /// The end positions of a deforming mesh's step are not one per vertex of the mesh.
+    #[error("the step's end positions have {found} vertices but the mesh has {expected}: give one end position per vertex, in the mesh's vertex order")]
+    VertexCountMismatch {
+        /// Vertices of the mesh.
+        expected: usize,
+        /// End positions given.
+        found: usize,
+    },
+
     // ------------------------------------------------------------ poses
     /// A quaternion or translation component of a pose is NaN or infinite.
     #[error("the pose has a non-finite component: every quaternion and translation component must be a finite number")]

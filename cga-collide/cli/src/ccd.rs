@@ -5,21 +5,30 @@
 //!   with a truth column the false positives and negatives; `--json` prints one JSON object a
 //!   line, one line a file. The kind (vertex–face or edge–edge) comes from `--kind` or from a
 //!   `vertex-face`/`edge-edge` folder in the path.
+//! - `cga ccd FRAME0 FRAME1`: one step of a deforming mesh (two meshes of the same topology,
+//!   e.g. PLY frames of a simulation, binary or text, double or float coordinates): every
+//!   vertex–face and edge–edge pair that touches during the step (pairs sharing a vertex
+//!   excluded) and the earliest contact time.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use cga_collide::motion::{load_queries, MotionQuery, QueryKind};
+use cga_collide::motion::{load_queries, step_self_contacts, MotionQuery, QueryKind};
+use cga_collide::TriMesh;
 use clap::{Args, ValueEnum};
 use serde_json::json;
 
 /// Continuous collision (motion between two poses), exact.
 #[derive(Args, Debug)]
 pub struct CcdArgs {
-    /// Query files of the CCD benchmark format (`.csv`, optionally `.gz`).
+    /// Query files of the CCD benchmark format (`.csv`, optionally `.gz`), or two mesh frames
+    /// of one deforming mesh (any mesh format; same vertices and faces in the same order).
     #[arg(required = true, value_name = "FILE")]
     files: Vec<PathBuf>,
+    /// Width of the earliest-contact interval of a step (`FRAME0 FRAME1`).
+    #[arg(long, default_value_t = 1e-9)]
+    tolerance: f64,
     /// The kind of every query file; by default taken from a `vertex-face` or `edge-edge`
     /// folder in each file's path.
     #[arg(long, value_enum)]
@@ -108,10 +117,84 @@ fn kind_of(path: &Path, flag: Option<Kind>) -> Result<QueryKind> {
     }
 }
 
+fn is_query_file(path: &Path) -> bool {
+    let name = path.to_string_lossy().to_ascii_lowercase();
+    name.ends_with(".csv") || name.ends_with(".csv.gz")
+}
+
+/// `cga ccd FRAME0 FRAME1`: a deforming mesh's self-contacts over one step.
+fn run_step(args: &CcdArgs) -> Result<()> {
+    let [f0, f1] = [&args.files[0], &args.files[1]];
+    let start = TriMesh::load(f0)?;
+    let end = TriMesh::load(f1)?;
+    if start.triangles() != end.triangles() || start.vertices().len() != end.vertices().len() {
+        bail!(
+            "{} and {} are not two frames of one mesh: {} vertices and {} faces against {} and {} (or the faces differ); a step needs the same vertices and faces in the same order",
+            f0.display(),
+            f1.display(),
+            start.vertices().len(),
+            start.num_triangles(),
+            end.vertices().len(),
+            end.num_triangles()
+        );
+    }
+    let t = Instant::now();
+    let contacts = step_self_contacts(&start, end.vertices(), args.tolerance)?;
+    let millis = t.elapsed().as_secs_f64() * 1e3;
+    let toi = contacts.first_contact.map(|c| [c.lo(), c.hi()]);
+    if args.json {
+        println!(
+            "{}",
+            json!({
+                "vertices": start.vertices().len(),
+                "faces": start.num_triangles(),
+                "vertex_face": contacts.vertex_face,
+                "edge_edge": contacts.edge_edge,
+                "toi": toi,
+                "millis": millis,
+                "vertex_face_candidates": contacts.vertex_face_candidates,
+                "edge_edge_candidates": contacts.edge_edge_candidates,
+            })
+        );
+    } else {
+        println!(
+            "{} -> {}: {} vertices, {} faces; {} vertex-face and {} edge-edge pairs touch ({} and {} swept-box candidates); first contact {}; {millis:.1} ms",
+            f0.display(),
+            f1.display(),
+            start.vertices().len(),
+            start.num_triangles(),
+            contacts.vertex_face.len(),
+            contacts.edge_edge.len(),
+            contacts.vertex_face_candidates,
+            contacts.edge_edge_candidates,
+            match toi {
+                Some([lo, hi]) => format!("in [{lo:e}, {hi:e}]"),
+                None => "none".into(),
+            }
+        );
+        for (v, f) in &contacts.vertex_face {
+            println!("vertex {v} face {f}");
+        }
+        for (a, b) in &contacts.edge_edge {
+            println!("edge {} {} edge {} {}", a[0], a[1], b[0], b[1]);
+        }
+    }
+    Ok(())
+}
+
 /// Runs `cga ccd`.
 pub fn run(args: CcdArgs) -> Result<()> {
     if args.files.is_empty() {
         bail!("give at least one query file");
+    }
+    if args.files.len() == 2 && !args.files.iter().any(|f| is_query_file(f)) {
+        return run_step(&args);
+    }
+    if let Some(f) = args.files.iter().find(|f| !is_query_file(f)) {
+        bail!(
+            "{}: not a query file (.csv or .csv.gz); give query files, or exactly two mesh frames of one deforming mesh",
+            f.display()
+        );
     }
     let mut all_micros = Vec::new();
     let (mut total, mut fp, mut fneg, mut truths) = (0, 0, 0, true);

@@ -280,11 +280,18 @@ impl Bvh {
         triangles: &[[u32; 3]],
         strategy: BuildStrategy,
     ) -> Bvh {
-        let n = triangles.len();
         let tri_boxes: Vec<Aabb> = triangles
             .iter()
             .map(|t| triangle_box(vertices, t))
             .collect();
+        Self::from_boxes(tri_boxes, strategy)
+    }
+
+    /// Builds the hierarchy over arbitrary boxes (leaf `i` is `boxes[i]`): e.g. the boxes that
+    /// moving primitives sweep during a time step. [`refit`](Self::refit) applies only to
+    /// hierarchies over triangles.
+    pub fn from_boxes(tri_boxes: Vec<Aabb>, strategy: BuildStrategy) -> Bvh {
+        let n = tri_boxes.len();
         let centroids: Vec<[f64; 3]> = tri_boxes.iter().map(Aabb::centroid).collect();
         let mut order: Vec<u32> = (0..n as u32).collect();
         let mut nodes = Vec::with_capacity(2 * n / MAX_LEAF + 1);

@@ -1,10 +1,13 @@
 //! The `f64` filter: decides most queries with interval arithmetic over sub-intervals of time,
 //! and says when it cannot.
 //!
-//! On a time interval `T`, every coordinate of a moving point lies between its values at the
-//! two ends of `T`; from those boxes, outward-rounded interval arithmetic encloses the
-//! coplanarity polynomial `f` and the in-plane conditions `gᵢ` (the same polynomials the exact
-//! decision uses, see [`super::algebraic`]) over all of `T`. Then, exactly for the real inputs:
+//! On a time interval `T`, the coplanarity polynomial `f` is the determinant of three vectors
+//! linear in `t`, so its Bernstein coefficients on `T` are sums of determinants of those
+//! vectors taken at the two ends of `T`, and `f(T)` lies within their hull. Every coordinate of
+//! a moving point lies between its values at the two ends of `T`; from those boxes,
+//! outward-rounded interval arithmetic encloses the in-plane conditions `gᵢ` (the same
+//! polynomials the exact decision uses, see [`super::algebraic`]) over all of `T`. Then,
+//! exactly for the real inputs:
 //! - `0 ∉ f(T)`, or some `gᵢ(T) < 0`: no contact during `T` (at a coplanar instant with every
 //!   `gᵢ ≥ 0` violated, the point is outside, or `n ≠ 0` and the edges miss);
 //! - `f` has strictly opposite signs at the two ends of `T` and every `gᵢ(T) > 0`: a root of `f`
@@ -95,12 +98,6 @@ fn at(p: &[[f64; 3]; 2], t: f64) -> V {
     })
 }
 
-/// The box swept by the point during `[t0, t1]`.
-fn during(p: &[[f64; 3]; 2], t0: f64, t1: f64) -> V {
-    let (a, b) = (at(p, t0), at(p, t1));
-    core::array::from_fn(|i| Iv::hull(a[i], b[i]))
-}
-
 /// What the filter found.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Filtered {
@@ -140,8 +137,8 @@ fn fold(side: Option<Side>, g: Iv) -> Option<Side> {
 /// What a query is, for the filter: the coplanarity polynomial and the in-plane conditions on
 /// boxes of positions.
 trait Conditions<const N: usize> {
-    /// `f` on the boxes.
-    fn coplanarity(x: &[V; N]) -> Iv;
+    /// The three vectors whose determinant is `f`, each linear in `t`.
+    fn factors(x: &[V; N]) -> [V; 3];
     /// The conditions `gᵢ ≥ 0` on the boxes.
     fn side(x: &[V; N]) -> Option<Side>;
 }
@@ -150,9 +147,9 @@ trait Conditions<const N: usize> {
 pub(crate) struct VertexFace;
 
 impl Conditions<4> for VertexFace {
-    fn coplanarity(x: &[V; 4]) -> Iv {
+    fn factors(x: &[V; 4]) -> [V; 3] {
         let [p, a, b, c] = x;
-        dot(&cross(&sub(b, a), &sub(c, a)), &sub(p, a))
+        [sub(b, a), sub(c, a), sub(p, a)]
     }
     fn side(x: &[V; 4]) -> Option<Side> {
         let [p, a, b, c] = x;
@@ -169,9 +166,9 @@ impl Conditions<4> for VertexFace {
 pub(crate) struct EdgeEdge;
 
 impl Conditions<4> for EdgeEdge {
-    fn coplanarity(x: &[V; 4]) -> Iv {
+    fn factors(x: &[V; 4]) -> [V; 3] {
         let [a0, a1, b0, b1] = x;
-        dot(&cross(&sub(a1, a0), &sub(b1, b0)), &sub(b0, a0))
+        [sub(a1, a0), sub(b1, b0), sub(b0, a0)]
     }
     fn side(x: &[V; 4]) -> Option<Side> {
         let [a0, a1, b0, b1] = x;
@@ -229,12 +226,34 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
         if visited > BUDGET {
             return Filtered::Unknown;
         }
-        let boxes: [V; 4] = core::array::from_fn(|i| during(&points[i], t0, t1));
-        let f = C::coplanarity(&boxes);
-        if !f.finite() {
+        // f is the determinant of three vectors linear in t, so its Bernstein coefficients
+        // on [t0, t1] are (sums of) the determinants of those vectors taken at either end:
+        // f on [t0, t1] lies within their hull, much tighter than interval evaluation.
+        let ends0: [V; 4] = core::array::from_fn(|i| at(&points[i], t0));
+        let ends1: [V; 4] = core::array::from_fn(|i| at(&points[i], t1));
+        let boxes: [V; 4] =
+            core::array::from_fn(|i| core::array::from_fn(|k| Iv::hull(ends0[i][k], ends1[i][k])));
+        // The plain interval value first: it is cheaper and often enough.
+        let [u, v, w] = C::factors(&boxes);
+        let rough = dot(&cross(&u, &v), &w);
+        if rough.positive() || rough.negative() {
+            continue;
+        }
+        let (x, y) = (C::factors(&ends0), C::factors(&ends1));
+        let det = |u: &V, v: &V, w: &V| dot(&cross(u, v), w);
+        let b0 = det(&x[0], &x[1], &x[2]);
+        let b3 = det(&y[0], &y[1], &y[2]);
+        let b1 = det(&y[0], &x[1], &x[2])
+            .add(det(&x[0], &y[1], &x[2]))
+            .add(det(&x[0], &x[1], &y[2]));
+        let b2 = det(&y[0], &y[1], &x[2])
+            .add(det(&y[0], &x[1], &y[2]))
+            .add(det(&x[0], &y[1], &y[2]));
+        let coefficients = [b0, b1, b2, b3];
+        if coefficients.iter().any(|b| !b.finite()) {
             return Filtered::Unknown;
         }
-        if f.positive() || f.negative() {
+        if coefficients.iter().all(|b| b.positive()) || coefficients.iter().all(|b| b.negative()) {
             continue;
         }
         let side = match C::side(&boxes) {
@@ -245,9 +264,7 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
             continue;
         }
         if side == Side::Inside {
-            let ends = |t: f64| C::coplanarity(&core::array::from_fn(|i| at(&points[i], t)));
-            let (f0, f1) = (ends(t0), ends(t1));
-            let crossing = (f0.positive() && f1.negative()) || (f0.negative() && f1.positive());
+            let crossing = (b0.positive() && b3.negative()) || (b0.negative() && b3.positive());
             if crossing && t1 - t0 <= tolerance {
                 return Filtered::Within(t0, t1);
             }

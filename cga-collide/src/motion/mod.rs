@@ -40,6 +40,7 @@ mod algebraic;
 mod filter;
 mod polynomial;
 mod query_file;
+mod step;
 
 use nalgebra::Point3;
 
@@ -47,6 +48,7 @@ use crate::error::Error;
 use filter::Filtered;
 use polynomial::Instant;
 pub use query_file::{load_queries, parse_queries, MotionQuery, QueryKind};
+pub use step::{mesh_edges, step_self_contacts, StepContacts};
 
 /// A point moving linearly from `start` (at `t = 0`) to `end` (at `t = 1`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -183,11 +185,7 @@ pub fn vertex_face_touch(vertex: &MovingPoint, face: &[MovingPoint; 3]) -> Resul
         &VERTEX_FACE_NAMES,
         [vertex, &face[0], &face[1], &face[2]],
     )?;
-    Ok(match filter::vertex_face(&points, f64::INFINITY) {
-        Filtered::Never => false,
-        Filtered::Within(..) => true,
-        Filtered::Unknown => exact_vertex_face(&points).is_some(),
-    })
+    Ok(points_vertex_face_touch(&points))
 }
 
 /// Whether the closed edges `a` and `b` touch at some `t ∈ [0, 1]`, exactly.
@@ -200,11 +198,7 @@ pub fn edge_edge_touch(a: &[MovingPoint; 2], b: &[MovingPoint; 2]) -> Result<boo
         &EDGE_EDGE_NAMES,
         [&a[0], &a[1], &b[0], &b[1]],
     )?;
-    Ok(match filter::edge_edge(&points, f64::INFINITY) {
-        Filtered::Never => false,
-        Filtered::Within(..) => true,
-        Filtered::Unknown => exact_edge_edge(&points).is_some(),
-    })
+    Ok(points_edge_edge_touch(&points))
 }
 
 /// The earliest time vertex `vertex` touches the closed triangle `face`, `None` if never in
@@ -223,12 +217,7 @@ pub fn vertex_face_first_contact(
         &VERTEX_FACE_NAMES,
         [vertex, &face[0], &face[1], &face[2]],
     )?;
-    let tolerance = tolerance.max(0.0);
-    Ok(match filter::vertex_face(&points, tolerance) {
-        Filtered::Never => None,
-        Filtered::Within(lo, hi) => Some(ContactTime { lo, hi }),
-        Filtered::Unknown => exact_vertex_face(&points).and_then(|c| bounded(&c, tolerance)),
-    })
+    Ok(points_vertex_face_first_contact(&points, tolerance))
 }
 
 /// The earliest time the closed edges `a` and `b` touch, `None` if never in `[0, 1]`; see
@@ -246,12 +235,51 @@ pub fn edge_edge_first_contact(
         &EDGE_EDGE_NAMES,
         [&a[0], &a[1], &b[0], &b[1]],
     )?;
+    Ok(points_edge_edge_first_contact(&points, tolerance))
+}
+
+/// [`vertex_face_touch`] on checked coordinates.
+pub(crate) fn points_vertex_face_touch(points: &[[[f64; 3]; 2]; 4]) -> bool {
+    match filter::vertex_face(points, f64::INFINITY) {
+        Filtered::Never => false,
+        Filtered::Within(..) => true,
+        Filtered::Unknown => exact_vertex_face(points).is_some(),
+    }
+}
+
+/// [`edge_edge_touch`] on checked coordinates.
+pub(crate) fn points_edge_edge_touch(points: &[[[f64; 3]; 2]; 4]) -> bool {
+    match filter::edge_edge(points, f64::INFINITY) {
+        Filtered::Never => false,
+        Filtered::Within(..) => true,
+        Filtered::Unknown => exact_edge_edge(points).is_some(),
+    }
+}
+
+/// [`vertex_face_first_contact`] on checked coordinates.
+pub(crate) fn points_vertex_face_first_contact(
+    points: &[[[f64; 3]; 2]; 4],
+    tolerance: f64,
+) -> Option<ContactTime> {
     let tolerance = tolerance.max(0.0);
-    Ok(match filter::edge_edge(&points, tolerance) {
+    match filter::vertex_face(points, tolerance) {
         Filtered::Never => None,
         Filtered::Within(lo, hi) => Some(ContactTime { lo, hi }),
-        Filtered::Unknown => exact_edge_edge(&points).and_then(|c| bounded(&c, tolerance)),
-    })
+        Filtered::Unknown => exact_vertex_face(points).and_then(|c| bounded(&c, tolerance)),
+    }
+}
+
+/// [`edge_edge_first_contact`] on checked coordinates.
+pub(crate) fn points_edge_edge_first_contact(
+    points: &[[[f64; 3]; 2]; 4],
+    tolerance: f64,
+) -> Option<ContactTime> {
+    let tolerance = tolerance.max(0.0);
+    match filter::edge_edge(points, tolerance) {
+        Filtered::Never => None,
+        Filtered::Within(lo, hi) => Some(ContactTime { lo, hi }),
+        Filtered::Unknown => exact_edge_edge(points).and_then(|c| bounded(&c, tolerance)),
+    }
 }
 
 fn bounded(candidates: &[Instant], tolerance: f64) -> Option<ContactTime> {
