@@ -250,6 +250,12 @@ fn next(x: f64, steps: i8) -> f64 {
     x
 }
 
+/// A small offset from zero, `steps · 2^-60` (not one ulp of zero, a subnormal: the oracle's
+/// bisection down to 2^-1074 is slow; subnormal-sized inputs come from the scaled copies).
+fn tiny(steps: i8) -> f64 {
+    f64::from(steps) * 2f64.powi(-60)
+}
+
 /// Constructed degenerate families: `(kind, points)`.
 fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
     let still = |x: [f64; 3]| [x, x];
@@ -292,7 +298,7 @@ fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
         // Contact exactly at t = 0 (vertex starts on the face, z perturbed by ulps) or at
         // t = 1 (ends there).
         3 => {
-            let on = [a, b, next(0.0, ulps)];
+            let on = [a, b, tiny(ulps)];
             let off = [a, b, 1.0];
             let m = if ulps % 2 == 0 { [on, off] } else { [off, on] };
             (Kind::VertexFace, [m, unit[0], unit[1], unit[2]])
@@ -342,7 +348,7 @@ fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
             [
                 still([0., 0., 0.]),
                 still([1., 0., 0.]),
-                [[a, next(0.0, ulps), 1.0], [a, next(0.0, ulps), 0.0]],
+                [[a, tiny(ulps), 1.0], [a, tiny(ulps), 0.0]],
                 [[a, 1.0, 1.0], [a, 1.0, 0.0]],
             ],
         ),
@@ -361,8 +367,8 @@ fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
                 [
                     ea[0],
                     ea[1],
-                    [[0.0, next(0.0, ulps), 1.0], [0.0, 0.0, -1.0]],
-                    [[1.0, 0.0, 1.0], [1.0, next(0.0, -ulps), -1.0]],
+                    [[0.0, tiny(ulps), 1.0], [0.0, 0.0, -1.0]],
+                    [[1.0, 0.0, 1.0], [1.0, tiny(-ulps), -1.0]],
                 ],
             )
         }
@@ -373,10 +379,7 @@ fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
                 still([0., 0., 0.]),
                 still([1., 0., 0.]),
                 [[a + 2.0, 0.0, 0.0], [next(1.0 + b, ulps), 0.0, 0.0]],
-                [
-                    [a + 3.0, 0.0, 0.0],
-                    [next(2.0 + b, ulps), 0.0, next(0.0, ulps)],
-                ],
+                [[a + 3.0, 0.0, 0.0], [next(2.0 + b, ulps), 0.0, tiny(ulps)]],
             ],
         ),
         // Coplanar edges for all t, crossing or not (all z = 0).
@@ -386,7 +389,7 @@ fn degenerate(family: u8, a: f64, b: f64, ulps: i8) -> (Kind, Points) {
                 still([0., 0., 0.]),
                 still([1., 0., 0.]),
                 [[a, 1.0, 0.0], [a, next(-b, ulps), 0.0]],
-                [[b, 2.0, 0.0], [next(a, ulps), next(0.0, ulps), 0.0]],
+                [[b, 2.0, 0.0], [next(a, ulps), tiny(ulps), 0.0]],
             ],
         ),
     }
@@ -407,7 +410,7 @@ fn special() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(600))]
+    #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
     fn random_grid_motions(kind in kind(), pts in grid_query()) {
@@ -438,7 +441,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(200))]
+    #![proptest_config(ProptestConfig::with_cases(100))]
 
     #[test]
     fn scaled_copies(

@@ -334,9 +334,10 @@ impl Algebraic {
             match &self.0 {
                 Repr::Exact(x) => return q.sign_at(x),
                 Repr::Root { lo, hi, .. } => {
-                    let (s_lo, s_hi) = (q.sign_at(lo), q.sign_at(hi));
+                    // Equal non-zero end signs first (cheap), then no root in between.
+                    let s_lo = q.sign_at(lo);
                     if s_lo != Ordering::Equal
-                        && s_hi != Ordering::Equal
+                        && q.sign_at(hi) == s_lo
                         && count_roots(&seq, lo, hi) == 0
                     {
                         return s_lo;
