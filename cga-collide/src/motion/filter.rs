@@ -25,6 +25,20 @@ struct Iv {
     hi: f64,
 }
 
+/// Widens a rounded-to-nearest result `r` to bounds of the exact value: the rounding error is
+/// at most half a unit in the last place, below `|r|·2⁻⁵²`; `TINY` covers results in the
+/// subnormal range. Cheaper than stepping to the neighbouring `f64`s, and as safe.
+#[inline(always)]
+fn down(r: f64) -> f64 {
+    r - (r.abs() * EPS + TINY)
+}
+#[inline(always)]
+fn up(r: f64) -> f64 {
+    r + (r.abs() * EPS + TINY)
+}
+const EPS: f64 = f64::EPSILON;
+const TINY: f64 = f64::MIN_POSITIVE;
+
 impl Iv {
     fn point(x: f64) -> Iv {
         Iv { lo: x, hi: x }
@@ -35,18 +49,21 @@ impl Iv {
             hi: a.hi.max(b.hi),
         }
     }
+    #[inline(always)]
     fn add(self, o: Iv) -> Iv {
         Iv {
-            lo: (self.lo + o.lo).next_down(),
-            hi: (self.hi + o.hi).next_up(),
+            lo: down(self.lo + o.lo),
+            hi: up(self.hi + o.hi),
         }
     }
+    #[inline(always)]
     fn sub(self, o: Iv) -> Iv {
         Iv {
-            lo: (self.lo - o.hi).next_down(),
-            hi: (self.hi - o.lo).next_up(),
+            lo: down(self.lo - o.hi),
+            hi: up(self.hi - o.lo),
         }
     }
+    #[inline(always)]
     fn mul(self, o: Iv) -> Iv {
         let (a, b, c, d) = (
             self.lo * o.lo,
@@ -55,8 +72,8 @@ impl Iv {
             self.hi * o.hi,
         );
         Iv {
-            lo: a.min(b).min(c).min(d).next_down(),
-            hi: a.max(b).max(c).max(d).next_up(),
+            lo: down(a.min(b).min(c.min(d))),
+            hi: up(a.max(b).max(c.max(d))),
         }
     }
     /// Strictly positive (a NaN bound is never positive).
@@ -89,6 +106,12 @@ fn dot(a: &V, b: &V) -> Iv {
 
 /// The position of a point moving from `p[0]` to `p[1]` at time `t`, enclosed.
 fn at(p: &[[f64; 3]; 2], t: f64) -> V {
+    if t == 0.0 {
+        return p[0].map(Iv::point);
+    }
+    if t == 1.0 {
+        return p[1].map(Iv::point);
+    }
     let t = Iv::point(t);
     let one_minus = Iv::point(1.0).sub(t);
     core::array::from_fn(|i| {
@@ -121,8 +144,7 @@ enum Side {
 }
 
 /// Folds one condition `g ≥ 0` into the side found so far (`None`: overflow).
-fn fold(side: Option<Side>, g: Iv) -> Option<Side> {
-    let side = side?;
+fn fold(side: Side, g: Iv) -> Option<Side> {
     if !g.finite() {
         return None;
     }
@@ -156,7 +178,7 @@ impl Conditions<4> for VertexFace {
         let n = cross(&sub(b, a), &sub(c, a));
         [(a, b), (b, c), (c, a)]
             .iter()
-            .fold(Some(Side::Inside), |side, (u, v)| {
+            .try_fold(Side::Inside, |side, (u, v)| {
                 fold(side, dot(&cross(&sub(v, u), &sub(p, u)), &n))
             })
     }
@@ -179,7 +201,7 @@ impl Conditions<4> for EdgeEdge {
         let v = dot(&cross(&d, &ea), &n);
         [u, nn.sub(u), v, nn.sub(v)]
             .into_iter()
-            .fold(Some(Side::Inside), fold)
+            .try_fold(Side::Inside, fold)
     }
 }
 
@@ -239,23 +261,6 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
         if rough.positive() || rough.negative() {
             continue;
         }
-        let (x, y) = (C::factors(&ends0), C::factors(&ends1));
-        let det = |u: &V, v: &V, w: &V| dot(&cross(u, v), w);
-        let b0 = det(&x[0], &x[1], &x[2]);
-        let b3 = det(&y[0], &y[1], &y[2]);
-        let b1 = det(&y[0], &x[1], &x[2])
-            .add(det(&x[0], &y[1], &x[2]))
-            .add(det(&x[0], &x[1], &y[2]));
-        let b2 = det(&y[0], &y[1], &x[2])
-            .add(det(&y[0], &x[1], &y[2]))
-            .add(det(&x[0], &y[1], &y[2]));
-        let coefficients = [b0, b1, b2, b3];
-        if coefficients.iter().any(|b| !b.finite()) {
-            return Filtered::Unknown;
-        }
-        if coefficients.iter().all(|b| b.positive()) || coefficients.iter().all(|b| b.negative()) {
-            continue;
-        }
         let side = match C::side(&boxes) {
             None => return Filtered::Unknown,
             Some(side) => side,
@@ -263,11 +268,46 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
         if side == Side::Outside {
             continue;
         }
+        // f is the determinant of three vectors linear in t, so its Bernstein coefficients
+        // on [t0, t1] are (sums of) the determinants of those vectors taken at either end:
+        // f on [t0, t1] lies within their hull, much tighter than interval evaluation.
+        let (x, y) = (C::factors(&ends0), C::factors(&ends1));
+        let (xx, xy, yx, yy) = (
+            cross(&x[0], &x[1]),
+            cross(&x[0], &y[1]),
+            cross(&y[0], &x[1]),
+            cross(&y[0], &y[1]),
+        );
+        let b0 = dot(&xx, &x[2]);
+        let b3 = dot(&yy, &y[2]);
+        let b1 = dot(&yx, &x[2]).add(dot(&xy, &x[2])).add(dot(&xx, &y[2]));
+        let b2 = dot(&yy, &x[2]).add(dot(&yx, &y[2])).add(dot(&xy, &y[2]));
+        let coefficients = [b0, b1, b2, b3];
+        if coefficients.iter().any(|b| !b.finite()) {
+            return Filtered::Unknown;
+        }
+        if coefficients.iter().all(|b| b.positive()) || coefficients.iter().all(|b| b.negative()) {
+            continue;
+        }
+
         if side == Side::Inside {
             let crossing = (b0.positive() && b3.negative()) || (b0.negative() && b3.positive());
             if crossing && t1 - t0 <= tolerance {
                 return Filtered::Within(t0, t1);
             }
+        }
+        // Where `f` may vanish at an end of the interval (an exact root there, typically a
+        // contact at the start of the step), no sub-interval touching that end can be proved
+        // either way unless the conditions rule it out there: leave it to the exact decision
+        // rather than split towards it.
+        let ruled_out_at = |t: f64| {
+            let point: [V; 4] = core::array::from_fn(|i| at(&points[i], t));
+            C::side(&point) == Some(Side::Outside)
+        };
+        if (!b0.positive() && !b0.negative() && !ruled_out_at(t0))
+            || (!b3.positive() && !b3.negative() && !ruled_out_at(t1))
+        {
+            return Filtered::Unknown;
         }
         let mid = 0.5 * (t0 + t1);
         if side != Side::Inside && t1 - t0 < NARROWEST {
@@ -282,10 +322,22 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
     Filtered::Never
 }
 
+/// The largest coordinate magnitude the filter takes: the conditions are of degree at most 4
+/// in differences of coordinates, so nothing overflows below it (an overflow could turn into a
+/// NaN that `min`/`max` would silently drop). Larger inputs go to the exact decision.
+const LARGEST: f64 = 1e60;
+
+fn too_large(points: &[[[f64; 3]; 2]; 4]) -> bool {
+    points.iter().flatten().flatten().any(|x| x.abs() > LARGEST)
+}
+
 /// The filter for vertex `points[0]` against triangle `points[1..4]`.
 pub(crate) fn vertex_face(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
     if boxes_apart(points) {
         return Filtered::Never;
+    }
+    if too_large(points) {
+        return Filtered::Unknown;
     }
     search::<VertexFace>(points, tolerance)
 }
@@ -294,6 +346,9 @@ pub(crate) fn vertex_face(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filter
 pub(crate) fn edge_edge(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
     if edge_boxes_apart(points) {
         return Filtered::Never;
+    }
+    if too_large(points) {
+        return Filtered::Unknown;
     }
     search::<EdgeEdge>(points, tolerance)
 }

@@ -149,7 +149,7 @@ pub fn parse_queries(text: &str, name: &str) -> Result<Vec<MotionQuery>, Error> 
         };
         rows.push(([xyz], truth, line_number));
     }
-    if rows.len() % 8 != 0 {
+    if !rows.len().is_multiple_of(8) {
         return Err(Error::Truncated {
             at: Location::line(name, rows.last().map_or(1, |r| r.2)),
             expected: format!(

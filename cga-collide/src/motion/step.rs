@@ -171,25 +171,41 @@ pub fn step_self_contacts(
         let (a, b) = (edges[i as usize], edges[j as usize]);
         [track(a[0]), track(a[1]), track(b[0]), track(b[1])]
     };
-    let mut vertex_face: Vec<(u32, u32)> = vertex_face_candidates
+    // One pass decides every candidate and bounds its first contact coarsely (the filter's
+    // first certified interval, or the exact isolating interval); only the pairs that can
+    // hold the earliest contact are then refined to the tolerance.
+    let vf_hits: Vec<((u32, u32), ContactTime)> = vertex_face_candidates
         .par_iter()
-        .filter(|c| super::points_vertex_face_touch(&vf_points(c)))
-        .copied()
+        .filter_map(|c| {
+            super::points_vertex_face_first_contact(&vf_points(c), f64::INFINITY).map(|t| (*c, t))
+        })
         .collect();
-    let edge_pairs: Vec<(u32, u32)> = edge_edge_candidates
+    let ee_hits: Vec<((u32, u32), ContactTime)> = edge_edge_candidates
         .par_iter()
-        .filter(|c| super::points_edge_edge_touch(&ee_points(c)))
-        .copied()
+        .filter_map(|c| {
+            super::points_edge_edge_first_contact(&ee_points(c), f64::INFINITY).map(|t| (*c, t))
+        })
         .collect();
-    let times: Vec<ContactTime> = vertex_face
+    let earliest_hi = vf_hits
+        .iter()
+        .chain(&ee_hits)
+        .map(|(_, t)| t.hi())
+        .fold(f64::INFINITY, f64::min);
+    let times: Vec<ContactTime> = vf_hits
         .par_iter()
-        .filter_map(|c| super::points_vertex_face_first_contact(&vf_points(c), tolerance))
+        .filter(|(_, t)| t.lo() <= earliest_hi)
+        .filter_map(|(c, _)| super::points_vertex_face_first_contact(&vf_points(c), tolerance))
         .chain(
-            edge_pairs
+            ee_hits
                 .par_iter()
-                .filter_map(|c| super::points_edge_edge_first_contact(&ee_points(c), tolerance)),
+                .filter(|(_, t)| t.lo() <= earliest_hi)
+                .filter_map(|(c, _)| {
+                    super::points_edge_edge_first_contact(&ee_points(c), tolerance)
+                }),
         )
         .collect();
+    let mut vertex_face: Vec<(u32, u32)> = vf_hits.iter().map(|(c, _)| *c).collect();
+    let edge_pairs: Vec<(u32, u32)> = ee_hits.iter().map(|(c, _)| *c).collect();
     vertex_face.sort_unstable();
     let mut edge_edge: Vec<([u32; 2], [u32; 2])> = edge_pairs
         .iter()
