@@ -52,7 +52,7 @@
 mod broad_phase;
 mod queries;
 
-pub use queries::NearestPair;
+pub use queries::{NearestPair, SegmentHit};
 
 use std::collections::HashSet;
 use std::sync::Arc;
