@@ -223,6 +223,18 @@ proptest! {
             prop_assert!(ta.intersects(&tb));
             // The witnesses are the triangles' f64 nearest points: together up to rounding.
             prop_assert!((d.witness_a - d.witness_b).norm() <= 1e-9, "{:?}", d);
+            // The nearest object to one touching others: the smallest of them, at exactly 0.
+            let pairs = touching(&scene);
+            for &x in &ids {
+                let first = pairs
+                    .iter()
+                    .filter_map(|&(p, q)| if p == x { Some(q) } else if q == x { Some(p) } else { None })
+                    .min();
+                if let Some(first) = first {
+                    let (n, e) = scene.nearest_to(x).unwrap().expect("another object");
+                    prop_assert_eq!((n, e.distance, e.error_bound), (first, 0.0, 0.0));
+                }
+            }
         }
         let mut least = f64::INFINITY;
         for (k, &x) in ids.iter().enumerate() {
@@ -270,6 +282,10 @@ fn stacked_boxes_and_shared_faces() {
     let (p, q, dist) = scene.nearest_pair().unwrap().expect("objects");
     assert!(want.contains(&(p, q)), "{p:?} {q:?}");
     assert_eq!((dist.distance, dist.error_bound), (0.0, 0.0));
+    // The nearest object to b: of the three it touches, the smallest handle, at exactly 0.
+    let (n, dist) = scene.nearest_to(b).unwrap().expect("objects");
+    assert_eq!((n, dist.distance, dist.error_bound), (a, 0.0, 0.0));
+    assert_eq!(scene.nearest_to(c).unwrap().map(|(n, _)| n), Some(b));
     // Excluded pairs and groups.
     scene.exclude_pair(b, a).unwrap();
     // d is alone in group 2 and meets only group 2; the column is group 1 and meets group 1.

@@ -200,8 +200,9 @@ impl Scene {
     }
 
     /// The object nearest to `id` (surfaces) and the certified distance, as
-    /// [`nearest_pair`](Self::nearest_pair) restricted to pairs with `id`. `None` when no other
-    /// object may be paired with it.
+    /// [`nearest_pair`](Self::nearest_pair) restricted to pairs with `id`: when some objects'
+    /// surfaces meet its surface, the one with the smallest handle, at distance exactly 0.
+    /// `None` when no other object may be paired with it.
     pub fn nearest_to(&self, id: ObjectId) -> Result<Option<(ObjectId, CertifiedDistance)>, Error> {
         self.object(id)?;
         let me = id.index;
@@ -214,6 +215,19 @@ impl Scene {
             .map(|o| (box_gap(&world, self.broad.bounds(o)), o))
             .collect();
         others.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+        // Surfaces that meet this one first (boxes at gap 0, in slot order): distance 0,
+        // proved by an intersecting triangle pair, and the search stops there.
+        let me_object = self.slot(me);
+        for &(_, o) in others.iter().take_while(|(gap, _)| *gap == 0.0) {
+            let other = self.slot(o);
+            if let Some(d) = me_object.collider.touching_distance_at(
+                &me_object.pose,
+                &other.collider,
+                &other.pose,
+            )? {
+                return Ok(Some((self.id_of(o), d)));
+            }
+        }
         let mut best: Option<(u32, CertifiedDistance)> = None;
         for (gap, o) in others {
             if best.is_some_and(|(_, d)| gap > d.distance + d.error_bound) {
