@@ -27,9 +27,12 @@ fn is_zero(v: &V) -> bool {
     v.iter().all(Zero::is_zero)
 }
 
-/// The least parameter `t ∈ [0, 1]` at which the closed segment `s` meets the closed triangle
-/// `t`, exactly (see the [module docs](self)); `None` when they do not meet. `Some` exactly
-/// when [`intersects_segment_triangle`](crate::query::intersects_segment_triangle) is true.
+/// The least parameter `t ∈ [0, 1]` at which the closed segment `s` (the points
+/// `s.a() + t (s.b() − s.a())`) meets the closed triangle `t`: where it crosses the triangle's
+/// plane, or, for a segment in that plane, where it enters the triangle (0 when `s.a()` is on
+/// it). An exact rational, the true value for the real numbers the `f64` coordinates denote;
+/// `None` when they do not meet. `Some` exactly when
+/// [`intersects_segment_triangle`](crate::query::intersects_segment_triangle) is true.
 /// A segment whose ends coincide is a point: `Some(0)` when the point is on the triangle.
 /// Degenerate triangles (collinear corners) are the segments between their corners.
 ///
