@@ -6,24 +6,64 @@
 //! triangle (0 when `p` is in it). Computed in rationals from the `f64` coordinates, so it is
 //! the true value for the real numbers those coordinates denote.
 
-use ga_core::scalar::{rational_from_f64, Rational};
+use ga_core::scalar::Rational;
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
-use crate::exact::vector::{add_scaled, cross, dot, sub};
 use crate::{Intersects, Segment, Triangle};
 
-type V = [Rational; 3];
+/// A three-vector of integers: the coordinates of the segment and triangle, all scaled by one
+/// power of two (`2^-e`, `e` the least exponent among them), so every `f64` is an exact
+/// integer and the arithmetic needs no fractions until the one division at the end.
+pub(crate) type W = [BigInt; 3];
 
-fn q(x: f64) -> Rational {
-    // Shapes hold finite coordinates only.
-    rational_from_f64(x).unwrap_or_else(Rational::zero)
+/// `x = m 2^e` exactly, `m` an integer with at most 53 bits.
+fn decompose(x: f64) -> (i64, i32) {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let fraction = (bits & ((1u64 << 52) - 1)) as i64;
+    let (m, e) = if biased == 0 {
+        (fraction, -1074) // zero and subnormals
+    } else {
+        (fraction | (1i64 << 52), biased - 1075)
+    };
+    (if x.is_sign_negative() { -m } else { m }, e)
 }
 
-fn qv(p: &nalgebra::Point3<f64>) -> V {
-    [q(p.x), q(p.y), q(p.z)]
+/// The points as integer vectors under a common scale (see [`W`]); finite coordinates only.
+fn scaled<const N: usize>(points: [&nalgebra::Point3<f64>; N]) -> [W; N] {
+    let parts = points.map(|p| [p.x, p.y, p.z].map(decompose));
+    let least = parts
+        .iter()
+        .flatten()
+        .filter(|(m, _)| *m != 0)
+        .map(|&(_, e)| e)
+        .min()
+        .unwrap_or(0);
+    parts.map(|p| p.map(|(m, e)| BigInt::from(m) << ((e - least) as usize)))
 }
 
-fn is_zero(v: &V) -> bool {
+fn sub(a: &W, b: &W) -> W {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+fn dot(a: &W, b: &W) -> BigInt {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+
+fn cross(u: &W, v: &W) -> W {
+    [
+        &u[1] * &v[2] - &u[2] * &v[1],
+        &u[2] * &v[0] - &u[0] * &v[2],
+        &u[0] * &v[1] - &u[1] * &v[0],
+    ]
+}
+
+fn scale(a: &W, s: &BigInt) -> W {
+    [&a[0] * s, &a[1] * s, &a[2] * s]
+}
+
+fn is_zero(v: &W) -> bool {
     v.iter().all(Zero::is_zero)
 }
 
@@ -50,12 +90,12 @@ fn is_zero(v: &V) -> bool {
 /// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn segment_triangle_entry(s: &Segment, t: &Triangle) -> Option<Rational> {
-    let (p, qq) = (qv(s.a()), qv(s.b()));
-    let d = sub(&qq, &p);
+    let [a, b, c] = t.vertices();
+    let [p, q, a, b, c] = scaled([s.a(), s.b(), a, b, c]);
+    let d = sub(&q, &p);
     if is_zero(&d) {
         return s.intersects(t).then(Rational::zero);
     }
-    let [a, b, c] = t.vertices().map(|v| qv(&v));
     let n = cross(&sub(&b, &a), &sub(&c, &a));
     if is_zero(&n) {
         // Collinear corners: the union of the three edges.
@@ -65,34 +105,48 @@ pub fn segment_triangle_entry(s: &Segment, t: &Triangle) -> Option<Rational> {
             .min();
     }
     let dp = dot(&n, &sub(&p, &a));
-    let dq = dot(&n, &sub(&qq, &a));
+    let dq = dot(&n, &sub(&q, &a));
     let corners = [&a, &b, &c];
-    // `edge(i, x) ≥ 0` for every edge exactly when the point `x` of the plane is in the
-    // triangle (the edges' inward sides, oriented by `n`).
-    let edge = |i: usize, alpha: &V| -> (Rational, Rational) {
+    // `(e_i × (x − u_i)) · n ≥ 0` for the three edges `e_i = v_i − u_i` exactly when the point
+    // `x` of the plane is in the triangle (each edge's inner side, oriented by `n`). Along the
+    // segment, `x = p + t d` makes it `α_i + β_i t`.
+    let edge = |i: usize, x: &W| -> W {
         let (u, v) = (corners[i], corners[(i + 1) % 3]);
         let e = sub(v, u);
-        (dot(&cross(&e, &sub(alpha, u)), &n), dot(&cross(&e, &d), &n))
+        cross(&e, &sub(x, u))
     };
     if !(dp.is_zero() && dq.is_zero()) {
-        // Crossing the plane (at one point) or parallel to it.
+        // Crossing the plane (at one point, t = dp / (dp − dq)) or parallel to it.
         if (dp.is_positive() && dq.is_positive()) || (dp.is_negative() && dq.is_negative()) {
             return None;
         }
-        let tt = &dp / &(&dp - &dq);
-        let x = add_scaled(&p, &d, &tt);
-        return (0..3).all(|i| !edge(i, &x).0.is_negative()).then_some(tt);
+        let den = &dp - &dq;
+        // The crossing point times `den`: `den p + dp d`; its inner-side tests, times `den`.
+        let x = {
+            let (pp, dd) = (scale(&p, &den), scale(&d, &dp));
+            [&pp[0] + &dd[0], &pp[1] + &dd[1], &pp[2] + &dd[2]]
+        };
+        let inside = (0..3).all(|i| {
+            let u = corners[i];
+            let e = sub(corners[(i + 1) % 3], u);
+            let side = dot(&cross(&e, &sub(&x, &scale(u, &den))), &n);
+            side.is_zero() || side.is_positive() == den.is_positive()
+        });
+        return inside.then(|| Rational::new(dp, den));
     }
-    // In the plane: clip [0, 1] by the three inward half-planes, each `α + β t ≥ 0`.
+    // In the plane: clip [0, 1] by the three inner half-planes `α + β t ≥ 0`.
     let (mut lo, mut hi) = (Rational::zero(), Rational::one());
     for i in 0..3 {
-        let (alpha, beta) = edge(i, &p);
+        let u = corners[i];
+        let e = sub(corners[(i + 1) % 3], u);
+        let alpha = dot(&edge(i, &p), &n);
+        let beta = dot(&cross(&e, &d), &n);
         if beta.is_zero() {
             if alpha.is_negative() {
                 return None;
             }
         } else {
-            let at = -&alpha / &beta;
+            let at = Rational::new(-alpha, beta.clone());
             if beta.is_positive() {
                 lo = lo.max(at);
             } else {
@@ -104,7 +158,7 @@ pub fn segment_triangle_entry(s: &Segment, t: &Triangle) -> Option<Rational> {
 }
 
 /// The least `t ∈ [0, 1]` with `p + t d` on the closed segment `[u, v]` (`d ≠ 0`), exactly.
-pub(crate) fn segment_entry(p: &V, d: &V, u: &V, v: &V) -> Option<Rational> {
+pub(crate) fn segment_entry(p: &W, d: &W, u: &W, v: &W) -> Option<Rational> {
     let e = sub(v, u);
     let w = sub(u, p);
     let m = cross(d, &e);
@@ -115,8 +169,8 @@ pub(crate) fn segment_entry(p: &V, d: &V, u: &V, v: &V) -> Option<Rational> {
             return None;
         }
         let mm = dot(&m, &m);
-        let tt = dot(&cross(&w, &e), &m) / &mm;
-        let ss = dot(&cross(&w, d), &m) / &mm;
+        let tt = Rational::new(dot(&cross(&w, &e), &m), mm.clone());
+        let ss = Rational::new(dot(&cross(&w, d), &m), mm);
         return (unit(&tt) && unit(&ss)).then_some(tt);
     }
     // Parallel (or `[u, v]` a point): they meet only on a common line.
@@ -124,8 +178,8 @@ pub(crate) fn segment_entry(p: &V, d: &V, u: &V, v: &V) -> Option<Rational> {
         return None;
     }
     let dd = dot(d, d);
-    let tu = dot(&w, d) / &dd;
-    let tv = dot(&sub(v, p), d) / &dd;
+    let tu = Rational::new(dot(&w, d), dd.clone());
+    let tv = Rational::new(dot(&sub(v, p), d), dd);
     let (first, last) = if tu <= tv { (tu, tv) } else { (tv, tu) };
     let lo = first.max(Rational::zero());
     let hi = last.min(Rational::one());
@@ -143,6 +197,8 @@ mod tests {
             4 => (-3i32..=3).prop_map(f64::from),
             2 => -3.0f64..3.0,
             1 => (-3.0f64..3.0).prop_map(|x| x * 1e-9),
+            1 => (-3.0f64..3.0).prop_map(|x| x * 1e150),
+            1 => (-3.0f64..3.0).prop_map(|x| x * 1e-310),
         ]
     }
 
@@ -170,9 +226,9 @@ mod tests {
     /// seen along a segment from `x` through a corner.
     fn entry_by_edges(s: &Segment, t: &Triangle) -> Option<Rational> {
         // In the plane: 0 when p is in the triangle, else the least entry through an edge.
-        let (p, qq) = (qv(s.a()), qv(s.b()));
+        let [a, b, c] = t.vertices();
+        let [p, qq, a, b, c] = scaled([s.a(), s.b(), a, b, c]);
         let d = sub(&qq, &p);
-        let [a, b, c] = t.vertices().map(|v| qv(&v));
         let start = Segment::new(*s.a(), *s.a()).unwrap();
         if start.intersects(t) {
             return Some(Rational::zero());
@@ -196,8 +252,8 @@ mod tests {
                 prop_assert!(!e.is_negative() && *e <= Rational::one());
             }
             let coplanar = {
-                let (p, qq) = (qv(s.a()), qv(s.b()));
-                let [a, b, c] = t.vertices().map(|v| qv(&v));
+                let [a, b, c] = t.vertices();
+                let [p, qq, a, b, c] = scaled([s.a(), s.b(), a, b, c]);
                 let n = cross(&sub(&b, &a), &sub(&c, &a));
                 dot(&n, &sub(&p, &a)).is_zero() && dot(&n, &sub(&qq, &a)).is_zero()
             };
