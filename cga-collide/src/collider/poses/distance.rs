@@ -248,8 +248,9 @@ impl Collider {
     /// exactly, that the distance is 0, so `distance` and `error_bound` are both 0. The
     /// witnesses are the `f64` nearest points of those two placed triangles (each on its
     /// triangle up to rounding, and equal when the `f64` routine finds the triangles meeting).
-    /// `Ok(None)` when the surfaces do not meet; the poses are refused exactly as by
-    /// [`distance_at`](Self::distance_at).
+    /// `Ok(None)` when the surfaces do not meet (poses refused as by
+    /// [`collides_at`](Self::collides_at)); meeting surfaces out of the range of
+    /// [`distance_at`](Self::distance_at) are refused as it refuses them.
     pub(crate) fn touching_distance_at(
         &self,
         pose_a: &Isometry3<f64>,
@@ -257,8 +258,6 @@ impl Collider {
         pose_b: &Isometry3<f64>,
     ) -> Result<Option<CertifiedDistance>, Error> {
         let pair = PosedPair::new(self, pose_a, other, pose_b)?;
-        let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
-        check_distance_range(magnitude)?;
         let first = if self.mode() == Mode::Brute {
             let (a, b) = self.placed_pair(pose_a, other, pose_b)?;
             a.intersecting_pairs(&b).first().copied()
@@ -268,6 +267,12 @@ impl Collider {
                 ControlFlow::Continue(()) => None,
             }
         };
+        if first.is_some() {
+            // Refused where `distance_at` refuses; surfaces that do not meet are answered
+            // wherever `collides_at` answers.
+            let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
+            check_distance_range(magnitude)?;
+        }
         Ok(first.map(|(i, j)| {
             let (s, t) = (
                 placed_corners(self, pose_a, i),
