@@ -3,8 +3,9 @@
 //! The segment `[p, q]` is the set of points `p + t (q − p)`, `t ∈ [0, 1]`. Its *entry* into a
 //! closed triangle is the least `t` at which it meets the triangle, an exact rational: where it
 //! crosses the triangle's plane, or, when the segment lies in that plane, where it enters the
-//! triangle (0 when `p` is in it). Computed in rationals from the `f64` coordinates, so it is
-//! the true value for the real numbers those coordinates denote.
+//! triangle (0 when `p` is in it). Computed exactly from the `f64` coordinates (in integers,
+//! the coordinates scaled by one power of two, and one fraction at the end), so it is the true
+//! value for the real numbers those coordinates denote.
 
 use ga_core::scalar::Rational;
 use num_bigint::BigInt;
