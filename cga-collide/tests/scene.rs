@@ -7,8 +7,10 @@ use std::sync::Arc;
 
 use cga_collide::collider::{pose_from_degrees, Collider};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion};
+use cga_collide::query::segment_triangle_entry;
+use cga_collide::scene::SegmentHit;
 use cga_collide::scene::{ObjectId, Scene};
-use cga_collide::{Error, Segment, TriMesh};
+use cga_collide::{Error, Intersects, Segment, TriMesh};
 use proptest::prelude::*;
 
 fn cube(side: f64) -> Arc<Collider> {
@@ -201,11 +203,39 @@ proptest! {
     }
 
     #[test]
-    fn nearest_pair_is_the_least_distance(objs in prop::collection::vec((0usize..4, random_pose()), 2..8)) {
+    fn nearest_pair_is_the_least_distance(objs in prop::collection::vec((0usize..4, any_pose()), 2..8)) {
         let parts = parts();
         let (scene, ids) = build(&parts, &objs);
         let (a, b, d) = scene.nearest_pair().unwrap().expect("two objects");
         prop_assert!(d.distance.is_finite() && d.error_bound.is_finite());
+        if !touching(&scene).is_empty() {
+            // Some surfaces meet: a pair whose surfaces meet, at distance exactly 0, proved by
+            // a pair of placed triangles that intersect exactly.
+            prop_assert_eq!((d.distance, d.error_bound), (0.0, 0.0));
+            let (ca, pa) = (scene.collider(a).unwrap(), scene.pose(a).unwrap());
+            let (cb, pb) = (scene.collider(b).unwrap(), scene.pose(b).unwrap());
+            prop_assert!(ca.collides_at(pa, cb, pb).unwrap());
+            let (i, j) = d.triangles.expect("a triangle pair");
+            let (ta, tb) = (
+                ca.placed(pa).unwrap().mesh().triangle(i),
+                cb.placed(pb).unwrap().mesh().triangle(j),
+            );
+            prop_assert!(ta.intersects(&tb));
+            // The witnesses are the triangles' f64 nearest points: together up to rounding.
+            prop_assert!((d.witness_a - d.witness_b).norm() <= 1e-9, "{:?}", d);
+            // The nearest object to one touching others: the smallest of them, at exactly 0.
+            let pairs = touching(&scene);
+            for &x in &ids {
+                let first = pairs
+                    .iter()
+                    .filter_map(|&(p, q)| if p == x { Some(q) } else if q == x { Some(p) } else { None })
+                    .min();
+                if let Some(first) = first {
+                    let (n, e) = scene.nearest_to(x).unwrap().expect("another object");
+                    prop_assert_eq!((n, e.distance, e.error_bound), (first, 0.0, 0.0));
+                }
+            }
+        }
         let mut least = f64::INFINITY;
         for (k, &x) in ids.iter().enumerate() {
             for &y in &ids[k + 1..] {
@@ -252,6 +282,10 @@ fn stacked_boxes_and_shared_faces() {
     let (p, q, dist) = scene.nearest_pair().unwrap().expect("objects");
     assert!(want.contains(&(p, q)), "{p:?} {q:?}");
     assert_eq!((dist.distance, dist.error_bound), (0.0, 0.0));
+    // The nearest object to b: of the three it touches, the smallest handle, at exactly 0.
+    let (n, dist) = scene.nearest_to(b).unwrap().expect("objects");
+    assert_eq!((n, dist.distance, dist.error_bound), (a, 0.0, 0.0));
+    assert_eq!(scene.nearest_to(c).unwrap().map(|(n, _)| n), Some(b));
     // Excluded pairs and groups.
     scene.exclude_pair(b, a).unwrap();
     // d is alone in group 2 and meets only group 2; the column is group 1 and meets group 1.
@@ -306,6 +340,81 @@ fn one_object_inside_another_counts_only_as_a_solid() {
 }
 
 #[test]
+fn nearest_pair_is_between_surfaces_in_solid_mode() {
+    // A box inside a big one (surfaces 0.4 apart), and two boxes 0.1 apart far away: the
+    // solids of the first pair overlap, but the nearest surfaces are those of the second.
+    let mut scene = Scene::new();
+    scene.add(cube(2.0), Isometry3::identity()).unwrap();
+    scene
+        .add(cube(1.2), Isometry3::translation(0.4, 0.4, 0.4))
+        .unwrap();
+    let c = scene
+        .add(cube(1.0), Isometry3::translation(10.0, 0.0, 0.0))
+        .unwrap();
+    let d = scene
+        .add(cube(1.0), Isometry3::translation(11.1, 0.0, 0.0))
+        .unwrap();
+    scene.set_solid(true);
+    assert_eq!(scene.colliding_pairs().unwrap().len(), 1);
+    let (p, q, dist) = scene.nearest_pair().unwrap().expect("objects");
+    assert_eq!((p, q), (c, d));
+    assert!(
+        (dist.distance - 0.1).abs() <= dist.error_bound + 1e-12,
+        "{dist:?}"
+    );
+}
+
+#[test]
+fn first_hits_along_a_segment() {
+    let unit = cube(1.0);
+    let mut scene = Scene::new();
+    // A row of boxes along x, two sharing the face x = 3 (both first met there), and one the
+    // segment only grazes along an edge.
+    let a = scene
+        .add(unit.clone(), Isometry3::translation(5.0, 0.0, 0.0))
+        .unwrap();
+    let b = scene
+        .add(unit.clone(), Isometry3::translation(3.0, 0.0, 0.0))
+        .unwrap();
+    let c = scene
+        .add(unit.clone(), Isometry3::translation(2.0, 0.0, 0.0))
+        .unwrap();
+    let edge = scene
+        .add(unit.clone(), Isometry3::translation(0.0, -1.0, -0.5))
+        .unwrap();
+    let s = Segment::new(Point3::new(-1.0, 0.0, 0.5), Point3::new(9.0, 0.0, 0.5)).unwrap();
+    let along = scene.segment_hits_along(&s).unwrap();
+    let got: Vec<(ObjectId, String)> = along
+        .iter()
+        .map(|h| (h.object, h.parameter.to_string()))
+        .collect();
+    // The grazed box from x = 0 (t = 1/10), c from x = 2 (3/10), b from x = 3 (2/5), a from 5.
+    assert_eq!(
+        got,
+        vec![
+            (edge, "1/10".into()),
+            (c, "3/10".into()),
+            (b, "2/5".into()),
+            (a, "3/5".into())
+        ]
+    );
+    assert_eq!(along[1].point, Point3::new(2.0, 0.0, 0.5));
+    assert_eq!(
+        scene.first_segment_hit(&s).unwrap().map(|h| h.object),
+        Some(edge)
+    );
+    // Starting inside c: the first hit is where the segment leaves it (x = 3), shared by b.
+    let inside = Segment::new(Point3::new(2.5, 0.5, 0.5), Point3::new(9.0, 0.5, 0.5)).unwrap();
+    let along = scene.segment_hits_along(&inside).unwrap();
+    assert_eq!((along[0].object, along[0].parameter_f64()), (b, 0.5 / 6.5));
+    assert_eq!(along[1].object, c);
+    assert_eq!(along[0].parameter, along[1].parameter);
+    // Missing everything.
+    let miss = Segment::new(Point3::new(-1.0, 5.0, 0.5), Point3::new(9.0, 5.0, 0.5)).unwrap();
+    assert_eq!(scene.first_segment_hit(&miss).unwrap(), None);
+}
+
+#[test]
 fn segments_handles_and_bad_poses() {
     let unit = cube(1.0);
     let mut scene = Scene::new();
@@ -336,6 +445,71 @@ fn segments_handles_and_bad_poses() {
     assert!(scene.remove(a).is_err());
     assert!(scene.nearest_to(c).unwrap().is_some());
     assert!(Scene::new().nearest_pair().unwrap().is_none());
+}
+
+/// Segments with ends on the half-integer lattice (along faces, edges and through corners of
+/// the lattice boxes) or anywhere in the scene's box; sometimes a point.
+fn segment() -> impl Strategy<Value = Segment> {
+    let lattice =
+        prop::array::uniform3(-8i32..10).prop_map(|v| Point3::from(v.map(|k| 0.5 * f64::from(k))));
+    let random = prop::array::uniform3(-4.0f64..5.0).prop_map(Point3::from);
+    let end = prop_oneof![lattice, random];
+    (end.clone(), end, 0..8u8)
+        .prop_map(|(a, b, k)| Segment::new(a, if k == 0 { a } else { b }).unwrap())
+}
+
+/// The first hit of a segment on every object, by brute force over every placed triangle.
+fn hits_by_brute_force(scene: &Scene, s: &Segment) -> Vec<SegmentHit> {
+    let mut out: Vec<SegmentHit> = Vec::new();
+    for id in scene.ids() {
+        let placed = scene
+            .collider(id)
+            .unwrap()
+            .placed(scene.pose(id).unwrap())
+            .unwrap();
+        let first = (0..placed.mesh().num_triangles() as u32)
+            .filter_map(|i| segment_triangle_entry(s, &placed.mesh().triangle(i)).map(|t| (t, i)))
+            .min();
+        if let Some((parameter, triangle)) = first {
+            out.push(SegmentHit {
+                object: id,
+                triangle,
+                parameter,
+                point: Point3::origin(),
+            });
+        }
+    }
+    out.sort_by(|x, y| x.parameter.cmp(&y.parameter).then(x.object.cmp(&y.object)));
+    out
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(60))]
+
+    /// Every object a segment hits, with its first hit, in order: equal to brute force over
+    /// every triangle of every object; the first hit is the first of them.
+    #[test]
+    fn segment_hits_in_order_equal_brute_force(objs in objects(12), segments in prop::collection::vec(segment(), 1..6)) {
+        let parts = parts();
+        let (scene, _) = build(&parts, &objs);
+        for s in &segments {
+            let along = scene.segment_hits_along(s).unwrap();
+            let want = hits_by_brute_force(&scene, s);
+            let key = |h: &SegmentHit| (h.object, h.triangle, h.parameter.clone());
+            prop_assert_eq!(along.iter().map(key).collect::<Vec<_>>(), want.iter().map(key).collect::<Vec<_>>());
+            let mut objects: Vec<ObjectId> = along.iter().map(|h| h.object).collect();
+            objects.sort_unstable();
+            prop_assert_eq!(scene.segment_hits(s).unwrap(), objects);
+            prop_assert_eq!(scene.first_segment_hit(s).unwrap(), along.first().cloned());
+            for h in &along {
+                // The reported point is the exact point of the hit, rounded.
+                let t = h.parameter_f64();
+                prop_assert!((0.0..=1.0).contains(&t));
+                let approx = s.a() + (s.b() - s.a()) * t;
+                prop_assert!((approx - h.point).norm() <= 1e-12 * (1.0 + s.a().coords.norm() + s.b().coords.norm()));
+            }
+        }
+    }
 }
 
 proptest! {

@@ -13,15 +13,16 @@ use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
 use cga_collide::collider::{pose_from_degrees, Collider};
-use cga_collide::nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion};
+use cga_collide::nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, UnitQuaternion};
 use cga_collide::scene::{ObjectId, Scene};
+use cga_collide::Segment;
 use clap::Args;
 use serde_json::json;
 
 use crate::mesh::load_mesh;
 
 /// Every pair of objects of a scene file that touch (exact), or are within a clearance, or the
-/// nearest pair.
+/// nearest pair; the objects a segment hits, in order.
 #[derive(Args, Debug)]
 pub struct SceneArgs {
     /// The scene file: one object a line, `MESH rx ry rz tx ty tz` or `MESH` and a row-major
@@ -33,6 +34,15 @@ pub struct SceneArgs {
     /// Also find the nearest pair and its certified distance.
     #[arg(long)]
     nearest: bool,
+    /// Also list every object the segment from (X0, Y0, Z0) to (X1, Y1, Z1) meets, in order
+    /// along it, each with its first hit (exact parameter, rounded): the first is the first hit.
+    #[arg(
+        long,
+        num_args = 6,
+        allow_negative_numbers = true,
+        value_names = ["X0", "Y0", "Z0", "X1", "Y1", "Z1"]
+    )]
+    segment: Option<Vec<f64>>,
     /// Poses to move every object to (a second scene file with the same objects in the same
     /// order), then ask again: the time of an update step and its question.
     #[arg(long, value_name = "FILE")]
@@ -210,6 +220,21 @@ pub fn run(args: SceneArgs) -> Result<()> {
             });
         }
     }
+    if let Some(v) = &args.segment {
+        let segment = Segment::new(Point3::new(v[0], v[1], v[2]), Point3::new(v[3], v[4], v[5]))
+            .context("--segment: the end points must be finite")?;
+        let (hits, time) = best_of(args.repeat, || Ok(scene.segment_hits_along(&segment)?))?;
+        value["millis_segment"] = json!(millis(time));
+        value["segment_hits"] = json!(hits
+            .iter()
+            .map(|h| json!({
+                "object": h.object.index(),
+                "triangle": h.triangle,
+                "parameter": h.parameter_f64(),
+                "point": [h.point.x, h.point.y, h.point.z],
+            }))
+            .collect::<Vec<_>>());
+    }
     if args.json {
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
@@ -231,6 +256,18 @@ pub fn run(args: SceneArgs) -> Result<()> {
         }
         if let Some(n) = value.get("nearest") {
             println!("nearest {n}");
+        }
+        if let Some(hits) = value.get("segment_hits").and_then(|h| h.as_array()) {
+            println!(
+                "segment: {} objects hit, first hits in order along it",
+                hits.len()
+            );
+            for h in hits {
+                println!(
+                    "hit {} at t = {} (triangle {}, point {})",
+                    h["object"], h["parameter"], h["triangle"], h["point"]
+                );
+            }
         }
     }
     Ok(())

@@ -34,6 +34,19 @@ fn touching_pairs_clearance_and_nearest() {
     let text = cga(&["scene", "stack.txt"], &dir);
     assert!(text.status.success());
     assert!(String::from_utf8_lossy(&text.stdout).contains("1 pairs touching"));
+    // A segment along y = z = 0.5 from x = -1 to 12: objects 0, 1, 2, 3 in order, first at x = 0.
+    let seg = ["--segment", "-1", "0.5", "0.5", "12", "0.5", "0.5"];
+    let v = json(&cga(
+        &[&["scene", "stack.txt", "--json"][..], &seg].concat(),
+        &dir,
+    ));
+    let hits = v["segment_hits"].as_array().unwrap();
+    let order: Vec<u64> = hits.iter().map(|h| h["object"].as_u64().unwrap()).collect();
+    assert_eq!(order, vec![0, 1, 2, 3]);
+    assert_eq!(hits[0]["parameter"], 1.0 / 13.0);
+    assert_eq!(hits[0]["point"], serde_json::json!([0.0, 0.5, 0.5]));
+    let text = cga(&[&["scene", "stack.txt"][..], &seg].concat(), &dir);
+    assert!(String::from_utf8_lossy(&text.stdout).contains("4 objects hit"));
 }
 
 #[test]

@@ -96,6 +96,7 @@ mod distance;
 
 use std::ops::ControlFlow;
 
+use ga_core::scalar::Rational;
 use nalgebra::{Isometry3, Point3};
 
 use crate::bounding::placed_leaves::{place, with_scratch, Placed, Scratch};
@@ -105,7 +106,7 @@ use crate::bounding::{Aabb, Bvh};
 use crate::collider::{Collider, Mode};
 use crate::error::Error;
 use crate::parallel::*;
-use crate::query::ray_crosses_triangle;
+use crate::query::{ray_crosses_triangle, segment_triangle_entry};
 use crate::{Ball, Intersects, Segment, Sphere, Triangle};
 
 /// Two colliders under their poses, ready to be traversed together.
@@ -458,6 +459,44 @@ impl Collider {
             |t| t.intersects(s),
             |c| c.segment_hits(s),
         )
+    }
+
+    /// Where the world segment `s` first meets this mesh at `pose`: the triangle and the exact
+    /// parameter `t ∈ [0, 1]` of the first point `s.a() + t (s.b() − s.a())` on the placed
+    /// surface ([`segment_triangle_entry`] of each triangle
+    /// [`segment_hits_at`](Self::segment_hits_at) reports; ties to the smaller triangle index).
+    /// `None` when the segment misses the surface.
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, Collider, Segment, TriMesh};
+    /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
+    /// let pose = Isometry3::translation(2.0, 0.0, 0.0); // x from 2 to 3
+    /// let s = Segment::new(Point3::new(0.0, 0.5, 0.5), Point3::new(4.0, 0.5, 0.5))?;
+    /// let (_, t) = cube.first_segment_hit_at(&pose, &s)?.expect("a hit");
+    /// assert_eq!(t.to_string(), "1/2"); // at x = 2
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    pub fn first_segment_hit_at(
+        &self,
+        pose: &Isometry3<f64>,
+        s: &Segment,
+    ) -> Result<Option<(u32, Rational)>, Error> {
+        let hits = self.segment_hits_at(pose, s)?;
+        let mut first: Option<(u32, Rational)> = None;
+        for i in hits {
+            // The placed triangle by the expression `placed()` uses: the triangle that was hit.
+            let [a, b, c] = self.mesh().corners(i).map(|v| pose * v);
+            let Some(t) = Triangle::new(a, b, c)
+                .ok()
+                .and_then(|tri| segment_triangle_entry(s, &tri))
+            else {
+                continue; // unreachable: the same exact test said it meets
+            };
+            if first.as_ref().is_none_or(|(_, best)| t < *best) {
+                first = Some((i, t));
+            }
+        }
+        Ok(first)
     }
 
     /// Sorted indices of the triangles of this mesh at `pose` that the world triangle meets.

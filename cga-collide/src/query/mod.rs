@@ -12,6 +12,8 @@
 //!   ([`ExactDistance`]).
 //! * [`triangle_intersection`]: the exact intersection of two triangles ([`ContactGeometry`]);
 //!   [`ray_crosses_triangle`]: the exact ray-parity step of point-in-solid tests.
+//! * [`segment_triangle_entry`]: the exact parameter at which a segment first meets a triangle
+//!   (the first hit of a segment cast).
 //!
 //! Questions about whole meshes are methods of [`Collider`](crate::collider::Collider).
 //! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
@@ -22,6 +24,7 @@ pub(crate) mod contact;
 pub(crate) mod containment;
 pub(crate) mod distance;
 pub(crate) mod intersects;
+pub(crate) mod segment_entry;
 pub(crate) mod separation;
 pub(crate) mod within_distance;
 
@@ -40,6 +43,7 @@ pub use intersects::{
     intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
     IntersectsWith,
 };
+pub use segment_entry::segment_triangle_entry;
 pub use within_distance::{
     within_distance_ball_ball, within_distance_ball_sphere, within_distance_segment_ball,
     within_distance_segment_segment, within_distance_segment_sphere,

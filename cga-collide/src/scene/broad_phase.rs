@@ -173,12 +173,16 @@ impl SweepAndPrune {
     }
 
     /// The first pair met by a sweep along `x` whose boxes overlap and for which `accept` holds
-    /// (an error from `accept` stops the sweep and is returned).
+    /// (an error from `accept` stops the sweep and is returned). `accept` must not call back
+    /// into the broad phase (the order is locked meanwhile).
     pub(crate) fn first_pair<E>(
         &self,
         mut accept: impl FnMut(u32, u32) -> Result<bool, E>,
     ) -> Result<Option<(u32, u32)>, E> {
-        let order = self.sorted().slots.clone();
+        // The order stays locked during the sweep (`accept` does not ask the broad phase), so
+        // nothing is copied per call.
+        let order = self.sorted();
+        let order = &order.slots;
         for (k, &a) in order.iter().enumerate() {
             let ba = &self.boxes[a as usize];
             for &b in &order[k + 1..] {

@@ -23,6 +23,8 @@
 //! | which pair is nearest, and how far apart? | [`Scene::nearest_pair`] |
 //! | what is nearest to this object? | [`Scene::nearest_to`] |
 //! | which objects does a segment hit? | [`Scene::segment_hits`] |
+//! | in which order along it, where does it first meet each? (exact parameter) | [`Scene::segment_hits_along`] |
+//! | what does a segment hit first? | [`Scene::first_segment_hit`] |
 //!
 //! Pairs can be left out: [`Scene::exclude_pair`] (parts that touch by design, such as adjacent
 //! robot links) and collision groups ([`Scene::set_groups`]: a pair is tested only when each
@@ -52,7 +54,7 @@
 mod broad_phase;
 mod queries;
 
-pub use queries::NearestPair;
+pub use queries::{NearestPair, SegmentHit};
 
 use std::collections::HashSet;
 use std::sync::Arc;

@@ -1,7 +1,8 @@
 //! The questions a [`Scene`] answers: the broad phase proposes pairs (or objects), and each is
 //! decided exactly by the colliders' pose queries, over the cores.
 
-use nalgebra::Isometry3;
+use ga_core::scalar::{rational_from_f64, Rational, Real};
+use nalgebra::{Isometry3, Point3};
 
 use super::broad_phase::box_gap;
 use super::{ObjectId, Scene};
@@ -13,6 +14,51 @@ use crate::Segment;
 
 /// A pair of objects with their certified distance.
 pub type NearestPair = (ObjectId, ObjectId, CertifiedDistance);
+
+/// Where a segment `[a, b]` first meets an object ([`Scene::segment_hits_along`],
+/// [`Scene::first_segment_hit`]): the least `t ∈ [0, 1]` with `a + t (b − a)` on the object's
+/// placed surface, exactly.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SegmentHit {
+    /// The object.
+    pub object: ObjectId,
+    /// The triangle of the object's mesh met first (the smallest index if several are met
+    /// first at the same point).
+    pub triangle: u32,
+    /// The exact parameter `t` of the first hit: the true value for the `f64` coordinates of
+    /// the segment and of the placed mesh (see [`segment_triangle_entry`](crate::query::segment_triangle_entry)).
+    pub parameter: Rational,
+    /// The point `a + t (b − a)` of the first hit, each coordinate the exact value rounded to
+    /// the nearest `f64`.
+    pub point: Point3<f64>,
+}
+
+impl SegmentHit {
+    fn new(object: ObjectId, triangle: u32, parameter: Rational, segment: &Segment) -> SegmentHit {
+        let at = |a: f64, b: f64| {
+            let (a, b) = (exact(a), exact(b));
+            Real::to_f64(&(&a + &(&(&b - &a) * &parameter)))
+        };
+        let (a, b) = (segment.a(), segment.b());
+        let point = Point3::new(at(a.x, b.x), at(a.y, b.y), at(a.z, b.z));
+        SegmentHit {
+            object,
+            triangle,
+            parameter,
+            point,
+        }
+    }
+
+    /// The parameter rounded to the nearest `f64` (in `[0, 1]`).
+    pub fn parameter_f64(&self) -> f64 {
+        Real::to_f64(&self.parameter)
+    }
+}
+
+fn exact(x: f64) -> Rational {
+    // Segments hold finite coordinates only.
+    rational_from_f64(x).unwrap_or_default()
+}
 
 impl Scene {
     /// Every pair of objects `(a, b)` that touch (surfaces meet; solids share a point with
@@ -87,17 +133,31 @@ impl Scene {
 
     /// The nearest pair of objects (surfaces) and its certified distance: among the pairs the
     /// search cannot prove farther, the one with the least `f64` distance, ties to the smaller
-    /// pair. `None` with fewer than two objects that may be paired. Touching objects are at
-    /// distance 0: when some touch, the first touching pair the broad phase's sweep meets is
-    /// reported (a nearest pair; the search stops there).
+    /// pair. `None` with fewer than two objects that may be paired.
+    ///
+    /// Objects whose surfaces meet are at distance 0 (whatever [`set_solid`](Self::set_solid)
+    /// says: the distance is between surfaces): when some do, the first such pair the broad
+    /// phase's sweep meets is reported and the search stops there (as FCL's minimum-distance
+    /// callback does). Its distance and error bound are exactly 0, proved by the intersecting
+    /// triangle pair the collision test stops at (`triangles`); the witnesses are the `f64`
+    /// nearest points of those two placed triangles (each on its triangle up to rounding).
     pub fn nearest_pair(&self) -> Result<Option<NearestPair>, Error> {
-        // Touching pairs first: their distance is 0, so the first touching pair the sweep meets
-        // is a nearest pair, and the search stops there.
-        if let Some((a, b)) = self
-            .broad
-            .first_pair(|a, b| Ok::<bool, Error>(self.tested(a, b) && self.touch(a, b)?))?
-        {
-            return Ok(Some((self.id_of(a), self.id_of(b), self.distance(a, b)?)));
+        // Touching pairs first: their distance is 0, so the first pair the sweep meets whose
+        // surfaces meet is a nearest pair, and the search stops there. The intersecting
+        // triangle pair the collision test stops at proves the 0 exactly (no distance search).
+        let mut touching = None;
+        let found = self.broad.first_pair(|a, b| {
+            if !self.tested(a, b) {
+                return Ok::<bool, Error>(false);
+            }
+            let (x, y) = (self.slot(a), self.slot(b));
+            touching = x
+                .collider
+                .touching_distance_at(&x.pose, &y.collider, &y.pose)?;
+            Ok(touching.is_some())
+        })?;
+        if let (Some((a, b)), Some(d)) = (found, touching) {
+            return Ok(Some((self.id_of(a), self.id_of(b), d)));
         }
         // A first bound from the pair of neighbours in sweep order with the smallest box gap.
         let order = self.broad.sweep_order();
@@ -140,8 +200,9 @@ impl Scene {
     }
 
     /// The object nearest to `id` (surfaces) and the certified distance, as
-    /// [`nearest_pair`](Self::nearest_pair) restricted to pairs with `id`. `None` when no other
-    /// object may be paired with it.
+    /// [`nearest_pair`](Self::nearest_pair) restricted to pairs with `id`: when some objects'
+    /// surfaces meet its surface, the one with the smallest handle, at distance exactly 0.
+    /// `None` when no other object may be paired with it.
     pub fn nearest_to(&self, id: ObjectId) -> Result<Option<(ObjectId, CertifiedDistance)>, Error> {
         self.object(id)?;
         let me = id.index;
@@ -154,6 +215,19 @@ impl Scene {
             .map(|o| (box_gap(&world, self.broad.bounds(o)), o))
             .collect();
         others.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+        // Surfaces that meet this one first (boxes at gap 0, in slot order): distance 0,
+        // proved by an intersecting triangle pair, and the search stops there.
+        let me_object = self.slot(me);
+        for &(_, o) in others.iter().take_while(|(gap, _)| *gap == 0.0) {
+            let other = self.slot(o);
+            if let Some(d) = me_object.collider.touching_distance_at(
+                &me_object.pose,
+                &other.collider,
+                &other.pose,
+            )? {
+                return Ok(Some((self.id_of(o), d)));
+            }
+        }
         let mut best: Option<(u32, CertifiedDistance)> = None;
         for (gap, o) in others {
             if best.is_some_and(|(_, d)| gap > d.distance + d.error_bound) {
@@ -169,13 +243,7 @@ impl Scene {
 
     /// Every object whose surface the closed segment meets, sorted.
     pub fn segment_hits(&self, segment: &Segment) -> Result<Vec<ObjectId>, Error> {
-        let (p, q) = (*segment.a(), *segment.b());
-        let near: Vec<u32> = self
-            .ids()
-            .into_iter()
-            .map(|o| o.index)
-            .filter(|&o| self.broad.bounds(o).may_meet_segment(&p, &q))
-            .collect();
+        let near = self.near_segment(segment);
         let hits = near
             .par_iter()
             .map(|&o| {
@@ -187,6 +255,68 @@ impl Scene {
             })
             .collect::<Result<Vec<bool>, Error>>()?;
         Ok(self.objects_hit(near, hits))
+    }
+
+    /// Every object whose surface the closed segment meets, each with its first hit, in order
+    /// along the segment: by the exact parameter of the first hit, ties (objects first met at
+    /// the same point) by handle. See [`SegmentHit`]; the objects are those of
+    /// [`segment_hits`](Self::segment_hits).
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use cga_collide::collider::Collider;
+    /// use cga_collide::nalgebra::{Isometry3, Point3};
+    /// use cga_collide::scene::Scene;
+    /// use cga_collide::{Segment, TriMesh};
+    /// let cube = Arc::new(Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?));
+    /// let mut scene = Scene::new();
+    /// let far = scene.add(cube.clone(), Isometry3::translation(6.0, 0.0, 0.0))?; // x in [6, 7]
+    /// let near = scene.add(cube.clone(), Isometry3::translation(2.0, 0.0, 0.0))?; // x in [2, 3]
+    /// let s = Segment::new(Point3::new(0.0, 0.5, 0.5), Point3::new(8.0, 0.5, 0.5))?;
+    /// let hits = scene.segment_hits_along(&s)?;
+    /// assert_eq!(hits.iter().map(|h| h.object).collect::<Vec<_>>(), vec![near, far]);
+    /// assert_eq!(hits[0].parameter.to_string(), "1/4"); // x = 2
+    /// assert_eq!((hits[1].parameter_f64(), hits[1].point), (0.75, Point3::new(6.0, 0.5, 0.5)));
+    /// assert_eq!(scene.first_segment_hit(&s)?, Some(hits[0].clone()));
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    pub fn segment_hits_along(&self, segment: &Segment) -> Result<Vec<SegmentHit>, Error> {
+        let near = self.near_segment(segment);
+        let firsts = near
+            .par_iter()
+            .map(|&o| {
+                let object = self.slot(o);
+                object.collider.first_segment_hit_at(&object.pose, segment)
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
+        let mut out: Vec<SegmentHit> = near
+            .into_iter()
+            .zip(firsts)
+            .filter_map(|(o, first)| {
+                first.map(|(triangle, parameter)| {
+                    SegmentHit::new(self.id_of(o), triangle, parameter, segment)
+                })
+            })
+            .collect();
+        out.sort_by(|x, y| x.parameter.cmp(&y.parameter).then(x.object.cmp(&y.object)));
+        Ok(out)
+    }
+
+    /// The first object the closed segment meets, going from `segment.a()` to `segment.b()`:
+    /// the first of [`segment_hits_along`](Self::segment_hits_along) (least exact parameter,
+    /// ties by handle). `None` when the segment meets no object.
+    pub fn first_segment_hit(&self, segment: &Segment) -> Result<Option<SegmentHit>, Error> {
+        Ok(self.segment_hits_along(segment)?.into_iter().next())
+    }
+
+    /// The live slots whose world boxes the segment may meet.
+    fn near_segment(&self, segment: &Segment) -> Vec<u32> {
+        let (p, q) = (*segment.a(), *segment.b());
+        self.ids()
+            .into_iter()
+            .map(|o| o.index)
+            .filter(|&o| self.broad.bounds(o).may_meet_segment(&p, &q))
+            .collect()
     }
 
     /// The tested pairs of slots whose boxes come within `reach`, `a < b`.

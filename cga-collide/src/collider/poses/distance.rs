@@ -5,7 +5,7 @@
 
 use std::ops::ControlFlow;
 
-use nalgebra::Isometry3;
+use nalgebra::{Isometry3, Point3};
 
 use super::PosedPair;
 use crate::bounding::oriented_boxes::OrientedGaps;
@@ -14,8 +14,9 @@ use crate::bounding::pose_tree::PoseNode;
 use crate::bounding::{box_distance2, boxes_within};
 use crate::collider::distance::{check_distance_range, finite};
 use crate::collider::nearest::{beyond, child_pairs, enqueue, improves, queued, unqueued};
-use crate::collider::Collider;
+use crate::collider::{Collider, Mode};
 use crate::error::Error;
+use crate::query::closest_points::triangle_triangle;
 use crate::query::separation::{certified_mesh_distance, examine_pair, Open};
 use crate::query::within_distance::{triangles_within, trivial};
 use crate::query::CertifiedDistance;
@@ -239,6 +240,53 @@ impl Collider {
             |y| placed_corners(other, pose_b, y),
         );
         finite(d, magnitude)
+    }
+
+    /// Distance 0 when the surfaces of `self` at `pose_a` and `other` at `pose_b` meet, found
+    /// without a distance search: the first intersecting triangle pair `(i, j)` of the early-exit
+    /// collision test ([`collides_at`](Self::collides_at)'s traversal, stopped there) proves,
+    /// exactly, that the distance is 0, so `distance` and `error_bound` are both 0. The
+    /// witnesses are the `f64` nearest points of those two placed triangles (each on its
+    /// triangle up to rounding, and equal when the `f64` routine finds the triangles meeting).
+    /// `Ok(None)` when the surfaces do not meet (poses refused as by
+    /// [`collides_at`](Self::collides_at)); meeting surfaces out of the range of
+    /// [`distance_at`](Self::distance_at) are refused as it refuses them.
+    pub(crate) fn touching_distance_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+    ) -> Result<Option<CertifiedDistance>, Error> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let first = if self.mode() == Mode::Brute {
+            let (a, b) = self.placed_pair(pose_a, other, pose_b)?;
+            a.intersecting_pairs(&b).first().copied()
+        } else {
+            match pair.run(&[(0, 0)], |i, j| ControlFlow::Break((i, j))) {
+                ControlFlow::Break(found) => Some(found),
+                ControlFlow::Continue(()) => None,
+            }
+        };
+        if first.is_some() {
+            // Refused where `distance_at` refuses; surfaces that do not meet are answered
+            // wherever `collides_at` answers.
+            let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
+            check_distance_range(magnitude)?;
+        }
+        Ok(first.map(|(i, j)| {
+            let (s, t) = (
+                placed_corners(self, pose_a, i),
+                placed_corners(other, pose_b, j),
+            );
+            let (_, x, y) = triangle_triangle(&s, &t);
+            CertifiedDistance {
+                distance: 0.0,
+                error_bound: 0.0,
+                witness_a: Point3::from(x),
+                witness_b: Point3::from(y),
+                triangles: Some((i, j)),
+            }
+        }))
     }
 }
 
