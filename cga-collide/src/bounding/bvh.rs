@@ -380,6 +380,25 @@ impl Bvh {
         }
     }
 
+    /// Recomputes every box from `leaf_box(i)` for leaf `i` (same tree, no rebuild): e.g. the
+    /// boxes the triangles sweep while the mesh moves between two poses.
+    pub fn refit_boxes(&mut self, leaf_box: impl Fn(u32) -> Aabb) {
+        for (b, &t) in self.boxes.iter_mut().zip(&self.order) {
+            *b = leaf_box(t);
+        }
+        for i in (0..self.nodes.len()).rev() {
+            let node = self.nodes[i];
+            let s = node.start as usize;
+            self.nodes[i].bounds = if node.is_leaf() {
+                self.boxes[s..s + node.count as usize]
+                    .iter()
+                    .fold(Aabb::EMPTY, |acc, b| acc.union(b))
+            } else {
+                self.nodes[s].bounds.union(&self.nodes[s + 1].bounds)
+            };
+        }
+    }
+
     /// The nodes (root first).
     pub fn nodes(&self) -> &[BvhNode] {
         &self.nodes

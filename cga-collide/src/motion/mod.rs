@@ -40,6 +40,7 @@ mod algebraic;
 mod filter;
 mod polynomial;
 mod query_file;
+mod rigid;
 mod step;
 
 use nalgebra::Point3;
@@ -48,6 +49,7 @@ use crate::error::Error;
 use filter::Filtered;
 use polynomial::Instant;
 pub use query_file::{load_queries, parse_queries, MotionQuery, QueryKind};
+pub use rigid::{MotionContacts, MotionPair};
 pub use step::{mesh_edges, step_self_contacts, StepContacts};
 
 /// A point moving linearly from `start` (at `t = 0`) to `end` (at `t = 1`).
