@@ -33,6 +33,13 @@ pub struct Collider {
     pub inner: Arc<RsCollider>,
 }
 
+/// What `Collider.__reduce__` returns: the function that rebuilds a collider, and its arguments
+/// (the vertex bytes, the face bytes, the mode).
+type Reduced<'py> = (
+    Bound<'py, PyAny>,
+    (Bound<'py, PyBytes>, Bound<'py, PyBytes>, &'static str),
+);
+
 fn mode_of(mode: &str) -> PyResult<Mode> {
     match mode {
         "bvh" => Ok(Mode::Bvh),
@@ -328,12 +335,7 @@ impl Collider {
 
     /// Pickling: the mesh (raw float64 and uint32 bytes) and the mode. The box tree is rebuilt
     /// when unpickled (deterministically: the same tree, the same answers).
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(
-        Bound<'py, PyAny>,
-        (Bound<'py, PyBytes>, Bound<'py, PyBytes>, &'static str),
-    )> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Reduced<'py>> {
         let py = slf.py();
         let this = slf.get();
         let mesh = this.inner.mesh();
@@ -369,7 +371,7 @@ impl Collider {
         mode: &str,
     ) -> PyResult<Collider> {
         let mode = mode_of(mode)?;
-        if vertices.len() % 24 != 0 || faces.len() % 12 != 0 {
+        if !vertices.len().is_multiple_of(24) || !faces.len().is_multiple_of(12) {
             return Err(value_error(
                 "pickled Collider: the vertex or face bytes are truncated".to_owned(),
             ));
