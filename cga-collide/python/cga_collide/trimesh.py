@@ -32,9 +32,9 @@ from ._native import Collider, ObjectId, Scene
 __all__ = ["CollisionManager", "ContactData", "DistanceData", "mesh_to_collider"]
 
 _EXTERNAL = "__external"
-# Above this many (edge pair) axes the convex-hull depth uses face normals only (an upper
-# bound of the depth).
-_MAX_EDGE_AXES = 250_000
+# Above this many edge pairs the convex-hull depth uses face normals only (an upper bound of
+# the depth, close for rounded hulls with many faces).
+_MAX_EDGE_AXES = 4096
 
 
 class _Hull:
@@ -275,13 +275,17 @@ def _contact_data(
     return out
 
 
-def _signed(a: _Placed, b: _Placed) -> Tuple[float, Tuple[int, int], np.ndarray, np.ndarray]:
+def _signed(
+    a: _Placed, b: _Placed, points: bool = True
+) -> Tuple[float, Tuple[int, int], np.ndarray, np.ndarray]:
     """Signed distance of two placed objects, with triangles and points: the certified
     distance when the surfaces are apart, minus the convex-hull penetration depth when they
-    touch."""
+    touch (then both points are one point of the exact contact, when ``points``)."""
     ca, cb = a.geometry.collider, b.geometry.collider
     if ca.collides_at(a.transform, cb, b.transform):
         depth, _ = _penetration(a.geometry.hull, a.transform, b.geometry.hull, b.transform)
+        if not points:
+            return -max(depth, 0.0), (-1, -1), np.full(3, np.nan), np.full(3, np.nan)
         contacts = ca.contacts_at(a.transform, cb, b.transform)
         ij, _, pts = contacts[0]
         p = pts.mean(axis=0)
@@ -428,13 +432,12 @@ class CollisionManager:
             allowed = set(candidates)
             hits = [h for h in hits if self._names[h] in allowed]
         if hits:
-            best = None
-            for oid in hits:
-                name = self._names[oid]
-                d, ij, pa, pb = _signed(self._objs[name], external)
-                if best is None or d < best[0]:
-                    best = (d, name, ij, pa, pb)
-            return best
+            name = min(
+                (self._names[oid] for oid in hits),
+                key=lambda n: _signed(self._objs[n], external, points=False)[0],
+            )
+            d, ij, pa, pb = _signed(self._objs[name], external)
+            return d, name, ij, pa, pb
         # apart from everything: the scene's nearest search, with the outside object added
         tmp = self._scene.add(external.geometry.collider, external.transform)
         try:
@@ -475,11 +478,11 @@ class CollisionManager:
             me = self._objs[name]
             touching = self._scene.colliding_with(me.id)
             if touching:
-                best = min(
-                    (_signed(me, self._objs[self._names[o]]) + (self._names[o],) for o in touching),
-                    key=lambda r: r[0],
+                other = min(
+                    (self._names[o] for o in touching),
+                    key=lambda n: _signed(me, self._objs[n], points=False)[0],
                 )
-                d, ij, pa, pb, other = best
+                d, ij, pa, pb = _signed(me, self._objs[other])
             else:
                 near = self._scene.nearest_to(me.id)
                 if near is None:
@@ -495,10 +498,11 @@ class CollisionManager:
                 best = None
                 for a, b in pairs:
                     na, nb = self._names[a], self._names[b]
-                    r = _signed(self._objs[na], self._objs[nb])
+                    r = _signed(self._objs[na], self._objs[nb], points=False)
                     if best is None or r[0] < best[0][0]:
                         best = (r, (na, nb))
-                (d, ij, pa, pb), pair = best
+                pair = best[1]
+                d, ij, pa, pb = _signed(self._objs[pair[0]], self._objs[pair[1]])
             else:
                 near = self._scene.nearest_pair()
                 if near is None:
