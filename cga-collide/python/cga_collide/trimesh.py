@@ -14,8 +14,9 @@ Deliberate differences from trimesh's FCL-backed manager (see ``docs/python.md``
   (the mean of its corners); FCL picks a point of its own. ``normal`` and ``depth`` are those
   of the minimum translation separating the two objects' convex hulls (separating-axis test),
   the same for every contact of one object pair; FCL gives per-contact estimates.
-* A negative ``min_distance_*`` (objects in collision) is minus that convex-hull penetration
-  depth; for non-convex objects it is an estimate, as FCL's is.
+* When objects collide, ``min_distance_*`` is minus the convex-hull penetration depth of one
+  colliding pair (the first found, as FCL stops at the first colliding pair it meets), not
+  necessarily the deepest; for non-convex objects the depth is an estimate, as FCL's is.
 * A transform must be a rigid motion (rotation and translation, ``max |RᵀR − I| <= 1e-6``):
   scale and shear are refused with a ``CgaError`` rather than silently mishandled.
 """
@@ -432,10 +433,8 @@ class CollisionManager:
             allowed = set(candidates)
             hits = [h for h in hits if self._names[h] in allowed]
         if hits:
-            name = min(
-                (self._names[oid] for oid in hits),
-                key=lambda n: _signed(self._objs[n], external, points=False)[0],
-            )
+            # in collision: one colliding object (the first), as FCL stops at the first
+            name = self._names[hits[0]]
             d, ij, pa, pb = _signed(self._objs[name], external)
             return d, name, ij, pa, pb
         # apart from everything: the scene's nearest search, with the outside object added
@@ -478,10 +477,7 @@ class CollisionManager:
             me = self._objs[name]
             touching = self._scene.colliding_with(me.id)
             if touching:
-                other = min(
-                    (self._names[o] for o in touching),
-                    key=lambda n: _signed(me, self._objs[n], points=False)[0],
-                )
+                other = self._names[touching[0]]
                 d, ij, pa, pb = _signed(me, self._objs[other])
             else:
                 near = self._scene.nearest_to(me.id)
@@ -493,22 +489,16 @@ class CollisionManager:
                 ij = dist.triangles if dist.triangles is not None else (-1, -1)
             pair = (name, other)
         else:
-            pairs = self._scene.colliding_pairs()
-            if pairs:
-                best = None
-                for a, b in pairs:
-                    na, nb = self._names[a], self._names[b]
-                    r = _signed(self._objs[na], self._objs[nb], points=False)
-                    if best is None or r[0] < best[0][0]:
-                        best = (r, (na, nb))
-                pair = best[1]
+            # The scene's nearest pair: a touching pair (distance 0, the first the broad
+            # phase meets) when some objects collide, as FCL stops at the first it meets.
+            near = self._scene.nearest_pair()
+            if near is None:
+                return self._ret(float("inf"), None, None, return_names, return_data)
+            a, b, dist = near
+            pair = (self._names[a], self._names[b])
+            if dist.distance == 0.0:
                 d, ij, pa, pb = _signed(self._objs[pair[0]], self._objs[pair[1]])
             else:
-                near = self._scene.nearest_pair()
-                if near is None:
-                    return self._ret(float("inf"), None, None, return_names, return_data)
-                a, b, dist = near
-                pair = (self._names[a], self._names[b])
                 d, pa, pb = dist.distance, dist.witness_a, dist.witness_b
                 ij = dist.triangles if dist.triangles is not None else (-1, -1)
         data = DistanceData(pair, ij, (pa, pb), d)
