@@ -281,7 +281,8 @@ def _signed(
 ) -> Tuple[float, Tuple[int, int], np.ndarray, np.ndarray]:
     """Signed distance of two placed objects, with triangles and points: the certified
     distance when the surfaces are apart, minus the convex-hull penetration depth when they
-    touch (then both points are one point of the exact contact, when ``points``)."""
+    touch (then both points are one point of the exact contact when ``points``, else NaN: the
+    exact contact geometry costs more than the rest)."""
     ca, cb = a.geometry.collider, b.geometry.collider
     if ca.collides_at(a.transform, cb, b.transform):
         depth, _ = _penetration(a.geometry.hull, a.transform, b.geometry.hull, b.transform)
@@ -425,7 +426,7 @@ class CollisionManager:
     # ------------------------------------------------------------------ distances
 
     def _nearest_among(
-        self, external: _Placed, candidates: Optional[List[str]] = None
+        self, external: _Placed, candidates: Optional[List[str]] = None, points: bool = True
     ) -> Optional[Tuple[float, str, Tuple[int, int], np.ndarray, np.ndarray]]:
         """The signed nearest object of the manager to a placed outside object."""
         hits = self._scene.colliding_at(external.geometry.collider, external.transform)
@@ -435,7 +436,7 @@ class CollisionManager:
         if hits:
             # in collision: one colliding object (the first), as FCL stops at the first
             name = self._names[hits[0]]
-            d, ij, pa, pb = _signed(self._objs[name], external)
+            d, ij, pa, pb = _signed(self._objs[name], external, points)
             return d, name, ij, pa, pb
         # apart from everything: the scene's nearest search, with the outside object added
         tmp = self._scene.add(external.geometry.collider, external.transform)
@@ -458,7 +459,7 @@ class CollisionManager:
         ``DistanceData``."""
         t = _as_transform(transform)
         external = _Placed(self._cache.get(mesh), t, None)  # type: ignore[arg-type]
-        best = self._nearest_among(external)
+        best = self._nearest_among(external, points=return_data)
         if best is None:
             return self._ret(float("inf"), None, None, return_name, return_data)
         d, name, ij, pa, pb = best
@@ -478,7 +479,7 @@ class CollisionManager:
             touching = self._scene.colliding_with(me.id)
             if touching:
                 other = self._names[touching[0]]
-                d, ij, pa, pb = _signed(me, self._objs[other])
+                d, ij, pa, pb = _signed(me, self._objs[other], return_data)
             else:
                 near = self._scene.nearest_to(me.id)
                 if near is None:
@@ -497,7 +498,7 @@ class CollisionManager:
             a, b, dist = near
             pair = (self._names[a], self._names[b])
             if dist.distance == 0.0:
-                d, ij, pa, pb = _signed(self._objs[pair[0]], self._objs[pair[1]])
+                d, ij, pa, pb = _signed(self._objs[pair[0]], self._objs[pair[1]], return_data)
             else:
                 d, pa, pb = dist.distance, dist.witness_a, dist.witness_b
                 ij = dist.triangles if dist.triangles is not None else (-1, -1)
@@ -511,7 +512,7 @@ class CollisionManager:
         ``other_manager``; names are ``(name in this manager, name in the other)``."""
         best = None
         for on, op in other_manager._objs.items():
-            r = self._nearest_among(op)
+            r = self._nearest_among(op, points=return_data)
             if r is not None and (best is None or r[0] < best[0][0]):
                 best = (r, on)
         if best is None:
