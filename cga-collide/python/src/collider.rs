@@ -33,12 +33,9 @@ pub struct Collider {
     pub inner: Arc<RsCollider>,
 }
 
-/// What `Collider.__reduce__` returns: the function that rebuilds a collider, and its arguments
-/// (the vertex bytes, the face bytes, the mode).
-type Reduced<'py> = (
-    Bound<'py, PyAny>,
-    (Bound<'py, PyBytes>, Bound<'py, PyBytes>, &'static str),
-);
+/// What `Collider.__reduce__` returns: the function that restores a collider, and its
+/// argument (the collider's bytes).
+type Reduced<'py> = (Bound<'py, PyAny>, (Bound<'py, PyBytes>,));
 
 fn mode_of(mode: &str) -> PyResult<Mode> {
     match mode {
@@ -333,74 +330,37 @@ impl Collider {
         )
     }
 
-    /// Pickling: the mesh (raw float64 and uint32 bytes) and the mode. The box tree is rebuilt
-    /// when unpickled (deterministically: the same tree, the same answers).
+    /// Pickling: the collider's bytes (`Collider::to_bytes` of the Rust crate: the mesh, the
+    /// mode and the shape of its box tree). Unpickling does not rebuild the tree: it checks the
+    /// bytes and recomputes the boxes from the vertices, a linear pass.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Reduced<'py>> {
         let py = slf.py();
-        let this = slf.get();
-        let mesh = this.inner.mesh();
-        let mut vb = Vec::with_capacity(mesh.vertices().len() * 24);
-        for p in mesh.vertices() {
-            for c in 0..3 {
-                vb.extend_from_slice(&p[c].to_le_bytes());
-            }
-        }
-        let mut fb = Vec::with_capacity(mesh.triangles().len() * 12);
-        for t in mesh.triangles() {
-            for &i in t {
-                fb.extend_from_slice(&i.to_le_bytes());
-            }
-        }
+        let inner = Arc::clone(&slf.get().inner);
+        let bytes = py.detach(|| inner.to_bytes());
         let restore = py.get_type::<Collider>().getattr("_from_bytes")?;
-        Ok((
-            restore,
-            (
-                PyBytes::new(py, &vb),
-                PyBytes::new(py, &fb),
-                mode_name(this.inner.mode()),
-            ),
-        ))
+        Ok((restore, (PyBytes::new(py, &bytes),)))
     }
 
-    /// Rebuilds a pickled collider (see ``__reduce__``).
+    /// The collider of bytes from ``__reduce__`` (the Rust ``Collider::to_bytes``), its tree
+    /// not rebuilt; bad bytes raise ``CgaError``.
     #[staticmethod]
-    fn _from_bytes(
-        py: Python<'_>,
-        vertices: &[u8],
-        faces: &[u8],
-        mode: &str,
-    ) -> PyResult<Collider> {
-        let mode = mode_of(mode)?;
-        if !vertices.len().is_multiple_of(24) || !faces.len().is_multiple_of(12) {
-            return Err(value_error(
-                "pickled Collider: the vertex or face bytes are truncated".to_owned(),
-            ));
-        }
-        let f64_at = |b: &[u8], k: usize| {
-            let mut x = [0u8; 8];
-            x.copy_from_slice(&b[8 * k..8 * k + 8]);
-            f64::from_le_bytes(x)
-        };
-        let v: Vec<Point3<f64>> = (0..vertices.len() / 24)
-            .map(|i| {
-                Point3::new(
-                    f64_at(vertices, 3 * i),
-                    f64_at(vertices, 3 * i + 1),
-                    f64_at(vertices, 3 * i + 2),
-                )
-            })
-            .collect();
-        let f: Vec<[u32; 3]> = faces
-            .chunks_exact(12)
-            .map(|c| {
-                let u = |k: usize| u32::from_le_bytes([c[k], c[k + 1], c[k + 2], c[k + 3]]);
-                [u(0), u(4), u(8)]
-            })
-            .collect();
-        py.detach(|| {
-            let mesh = TriMesh::new(v, f).map_err(err)?;
-            Ok(Collider::new_from(mesh, mode))
-        })
+    fn _from_bytes(py: Python<'_>, data: &[u8]) -> PyResult<Collider> {
+        let c = py.detach(|| RsCollider::from_bytes(data)).map_err(err)?;
+        Ok(Collider { inner: Arc::new(c) })
+    }
+
+    /// The collider as bytes (mesh, mode, shape of the box tree); ``Collider.from_bytes``
+    /// reads them back without rebuilding the tree.
+    fn to_bytes<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        let inner = &self.inner;
+        let bytes = py.detach(|| inner.to_bytes());
+        PyBytes::new(py, &bytes)
+    }
+
+    /// A collider from ``to_bytes``' bytes, without rebuilding its tree.
+    #[staticmethod]
+    fn from_bytes(py: Python<'_>, data: &[u8]) -> PyResult<Collider> {
+        Collider::_from_bytes(py, data)
     }
 
     // ------------------------------------------------------------------ surfaces touch

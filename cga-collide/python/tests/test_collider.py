@@ -237,11 +237,40 @@ def test_pickle_round_trip(bunny):
         assert back.distance_at(pa[0], c, pb[0]).distance == c.distance_at(pa[0], c, pb[0]).distance
 
 
-def test_corrupt_pickle_is_an_error():
+def test_corrupt_pickle_is_an_error(cube):
+    data = cube.to_bytes()
     with pytest.raises(cc.CgaError, match="truncated"):
-        cc.Collider._from_bytes(b"\0" * 23, b"", "bvh")
-    with pytest.raises(cc.CgaError, match="vertex index"):
-        cc.Collider._from_bytes(b"\0" * 24, (7).to_bytes(4, "little") * 3, "bvh")
+        cc.Collider.from_bytes(data[:20])
+    with pytest.raises(cc.CgaError, match="but 455 follow"):
+        cc.Collider.from_bytes(data[:-1])
+    with pytest.raises(cc.CgaError, match="not a serialized collider"):
+        cc.Collider.from_bytes(b"x" * len(data))
+    with pytest.raises(cc.CgaError, match="follow the header"):
+        cc.Collider.from_bytes(data + b"\0")
+    for i in range(0, len(data), 7):  # a flipped byte is refused or read as some valid collider
+        bad = bytearray(data)
+        bad[i] ^= 0xFF
+        try:
+            cc.Collider.from_bytes(bytes(bad))
+        except cc.CgaError:
+            pass
+
+
+def test_bytes_keep_the_tree_and_skip_the_build(bunny):
+    import time
+
+    data = bunny.to_bytes()
+    back = cc.Collider.from_bytes(data)
+    assert back.to_bytes() == data
+    t = time.perf_counter()
+    for _ in range(3):
+        cc.Collider.from_bytes(data)
+    read = time.perf_counter() - t
+    t = time.perf_counter()
+    for _ in range(3):
+        cc.Collider(bunny.vertices, bunny.faces)
+    build = time.perf_counter() - t
+    print(f"from_bytes {read / 3 * 1e3:.2f} ms, build {build / 3 * 1e3:.2f} ms")
 
 
 def test_threads_share_colliders(bunny):

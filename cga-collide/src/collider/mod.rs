@@ -61,6 +61,7 @@ mod pairs;
 mod pose;
 pub(crate) mod poses;
 mod self_intersection;
+mod serial;
 
 pub use contacts::{Contact, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
