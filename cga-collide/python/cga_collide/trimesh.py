@@ -139,8 +139,10 @@ class _Geometry:
 
 
 def _arrays(mesh: Any) -> Tuple[np.ndarray, np.ndarray]:
-    vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float64)
-    faces = np.ascontiguousarray(mesh.faces, dtype=np.int64)
+    """Copies of the mesh's arrays (a mesh changed after ``add_object`` does not change the
+    object)."""
+    vertices = np.array(mesh.vertices, dtype=np.float64, order="C", copy=True)
+    faces = np.array(mesh.faces, dtype=np.int64, order="C", copy=True)
     return vertices, faces
 
 
