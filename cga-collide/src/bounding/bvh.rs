@@ -399,6 +399,26 @@ impl Bvh {
         }
     }
 
+    /// A hierarchy with a given shape (`nodes`' `start` and `count`, and the leaf `order`) over
+    /// `triangles`, every box recomputed from the geometry (as [`refit`](Self::refit) does).
+    /// The caller has checked the shape: children after their parent and in range, every
+    /// position of `order` in exactly one leaf of at most [`MAX_LEAF`] triangles, `order` a
+    /// permutation of the triangles (`collider::serial` does, for colliders read back).
+    pub(crate) fn from_checked_shape(
+        nodes: Vec<BvhNode>,
+        order: Vec<u32>,
+        vertices: &[Point3<f64>],
+        triangles: &[[u32; 3]],
+    ) -> Bvh {
+        let mut bvh = Bvh {
+            boxes: vec![Aabb::EMPTY; order.len()],
+            nodes,
+            order,
+        };
+        bvh.refit(vertices, triangles);
+        bvh
+    }
+
     /// The nodes (root first).
     pub fn nodes(&self) -> &[BvhNode] {
         &self.nodes

@@ -27,6 +27,10 @@
 //! | does the mesh cut itself? | [`self_intersections`](Collider::self_intersections), [`self_intersects`](Collider::self_intersects) | (invariant under poses) | |
 //! | is a point in the closed solid? | [`contains_point`](Collider::contains_point) | [`contains_point_at`](Collider::contains_point_at) | |
 //!
+//! A built collider travels as bytes, its tree included: [`Collider::to_bytes`] and
+//! [`Collider::from_bytes`] (checked on reading; the boxes are recomputed, the tree is not
+//! rebuilt).
+//!
 //! Operations between two primitives (segments, triangles, spheres, balls) are free functions
 //! in [`crate::query`] (`intersects_<a>_<b>`, `within_distance_<a>_<b>`, `distance_<a>_<b>`).
 //! The scenes and motion queries built on colliders follow the same shape.
@@ -61,6 +65,7 @@ mod pairs;
 mod pose;
 pub(crate) mod poses;
 mod self_intersection;
+mod serial;
 
 pub use contacts::{Contact, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
