@@ -104,23 +104,6 @@ fn dot(a: &V, b: &V) -> Iv {
     a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
 }
 
-/// The position of a point moving from `p[0]` to `p[1]` at time `t`, enclosed.
-fn at(p: &[[f64; 3]; 2], t: f64) -> V {
-    if t == 0.0 {
-        return p[0].map(Iv::point);
-    }
-    if t == 1.0 {
-        return p[1].map(Iv::point);
-    }
-    let t = Iv::point(t);
-    let one_minus = Iv::point(1.0).sub(t);
-    core::array::from_fn(|i| {
-        one_minus
-            .mul(Iv::point(p[0][i]))
-            .add(t.mul(Iv::point(p[1][i])))
-    })
-}
-
 /// What the filter found.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Filtered {
@@ -156,6 +139,103 @@ fn fold(side: Side, g: Iv) -> Option<Side> {
     })
 }
 
+/// `f` (a cubic) and the in-plane conditions (quartics; unused slots hold the constant 1) in
+/// Bernstein form on the current time interval, each scaled by a positive constant. A
+/// polynomial's values on the interval lie within the hull of its coefficients, its values at
+/// the ends are the first and last coefficients, and halving the interval is de Casteljau's
+/// averaging: no positions are recomputed.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Forms {
+    f: [Iv; 4],
+    g: [[Iv; 5]; 4],
+}
+
+impl Iv {
+    fn half(self) -> Iv {
+        Iv {
+            lo: down(self.lo * 0.5),
+            hi: up(self.hi * 0.5),
+        }
+    }
+    fn times(self, k: f64) -> Iv {
+        Iv::point(k).mul(self)
+    }
+}
+
+/// The product `x(t) × y(t)` of two vectors linear in `t` (given at the two ends), as Bernstein
+/// coefficients of a quadratic with the middle one doubled: `[x₀×y₀, x₀×y₁ + x₁×y₀, x₁×y₁]`.
+fn quadratic_cross(x: &[V; 2], y: &[V; 2]) -> [V; 3] {
+    let m0 = cross(&x[0], &y[1]);
+    let m1 = cross(&x[1], &y[0]);
+    [
+        cross(&x[0], &y[0]),
+        [m0[0].add(m1[0]), m0[1].add(m1[1]), m0[2].add(m1[2])],
+        cross(&x[1], &y[1]),
+    ]
+}
+
+/// `n(t)·w(t)` for `n` from [`quadratic_cross`] and `w` linear: the cubic's Bernstein
+/// coefficients times 3.
+fn cubic_det(n: &[V; 3], w: &[V; 2]) -> [Iv; 4] {
+    [
+        dot(&n[0], &w[0]).times(3.0),
+        dot(&n[1], &w[0]).add(dot(&n[0], &w[1])),
+        dot(&n[2], &w[0]).add(dot(&n[1], &w[1])),
+        dot(&n[2], &w[1]).times(3.0),
+    ]
+}
+
+/// `q(t)·n(t)` for two vectors from [`quadratic_cross`]: the quartic's Bernstein coefficients
+/// times 12.
+fn quartic_dot(q: &[V; 3], n: &[V; 3]) -> [Iv; 5] {
+    [
+        dot(&q[0], &n[0]).times(12.0),
+        dot(&q[0], &n[1]).add(dot(&q[1], &n[0])).times(3.0),
+        dot(&q[0], &n[2])
+            .add(dot(&q[1], &n[1]))
+            .add(dot(&q[2], &n[0]))
+            .times(2.0),
+        dot(&q[1], &n[2]).add(dot(&q[2], &n[1])).times(3.0),
+        dot(&q[2], &n[2]).times(12.0),
+    ]
+}
+
+/// De Casteljau at the middle: the coefficients on the left and right halves.
+fn split<const N: usize>(c: &[Iv; N]) -> ([Iv; N], [Iv; N]) {
+    let mut row = *c;
+    let mut left = *c;
+    let mut right = *c;
+    left[0] = row[0];
+    right[N - 1] = row[N - 1];
+    for r in 1..N {
+        for i in 0..N - r {
+            row[i] = row[i].add(row[i + 1]).half();
+        }
+        left[r] = row[0];
+        right[N - 1 - r] = row[N - 1 - r];
+    }
+    (left, right)
+}
+
+fn split_forms(x: &Forms) -> (Forms, Forms) {
+    let (fl, fr) = split(&x.f);
+    let halves: [([Iv; 5], [Iv; 5]); 4] = core::array::from_fn(|k| split(&x.g[k]));
+    (
+        Forms {
+            f: fl,
+            g: core::array::from_fn(|k| halves[k].0),
+        },
+        Forms {
+            f: fr,
+            g: core::array::from_fn(|k| halves[k].1),
+        },
+    )
+}
+
+fn signed(c: &[Iv]) -> bool {
+    c.iter().all(|b| b.positive()) || c.iter().all(|b| b.negative())
+}
+
 /// What a query is, for the filter: the coplanarity polynomial and the in-plane conditions on
 /// boxes of positions.
 trait Conditions<const N: usize> {
@@ -163,12 +243,31 @@ trait Conditions<const N: usize> {
     fn factors(x: &[V; N]) -> [V; 3];
     /// The conditions `gᵢ ≥ 0` on the boxes.
     fn side(x: &[V; N]) -> Option<Side>;
+    /// `f` and the conditions in Bernstein form on `[0, 1]`, from the points at both ends.
+    fn bernstein(start: &[V; N], end: &[V; N]) -> Forms;
 }
 
 /// Vertex `p` against triangle `abc`.
 pub(crate) struct VertexFace;
 
 impl Conditions<4> for VertexFace {
+    fn bernstein(s: &[V; 4], e: &[V; 4]) -> Forms {
+        let (e1, e2, w) = (
+            [sub(&s[2], &s[1]), sub(&e[2], &e[1])],
+            [sub(&s[3], &s[1]), sub(&e[3], &e[1])],
+            [sub(&s[0], &s[1]), sub(&e[0], &e[1])],
+        );
+        let n = quadratic_cross(&e1, &e2);
+        let side = |u: usize, v: usize| {
+            let d = [sub(&s[v], &s[u]), sub(&e[v], &e[u])];
+            let r = [sub(&s[0], &s[u]), sub(&e[0], &e[u])];
+            quartic_dot(&quadratic_cross(&d, &r), &n)
+        };
+        Forms {
+            f: cubic_det(&n, &w),
+            g: [side(1, 2), side(2, 3), side(3, 1), [Iv::point(1.0); 5]],
+        }
+    }
     fn factors(x: &[V; 4]) -> [V; 3] {
         let [p, a, b, c] = x;
         [sub(b, a), sub(c, a), sub(p, a)]
@@ -188,6 +287,24 @@ impl Conditions<4> for VertexFace {
 pub(crate) struct EdgeEdge;
 
 impl Conditions<4> for EdgeEdge {
+    fn bernstein(s: &[V; 4], e: &[V; 4]) -> Forms {
+        let ea = [sub(&s[1], &s[0]), sub(&e[1], &e[0])];
+        let eb = [sub(&s[3], &s[2]), sub(&e[3], &e[2])];
+        let d = [sub(&s[2], &s[0]), sub(&e[2], &e[0])];
+        let n = quadratic_cross(&ea, &eb);
+        let nn = quartic_dot(&n, &n);
+        let u = quartic_dot(&quadratic_cross(&d, &eb), &n);
+        let v = quartic_dot(&quadratic_cross(&d, &ea), &n);
+        Forms {
+            f: cubic_det(&n, &d),
+            g: [
+                u,
+                v,
+                core::array::from_fn(|k| nn[k].sub(u[k])),
+                core::array::from_fn(|k| nn[k].sub(v[k])),
+            ],
+        }
+    }
     fn factors(x: &[V; 4]) -> [V; 3] {
         let [a0, a1, b0, b1] = x;
         [sub(a1, a0), sub(b1, b0), sub(b0, a0)]
@@ -241,83 +358,63 @@ const NARROWEST: f64 = 1.0 / 65536.0;
 /// The filter for a query of kind `C`. `tolerance`: the width at which a contact interval is
 /// accepted (`f64::INFINITY` when only whether they touch is asked).
 fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filtered {
-    let mut stack = vec![(0.0f64, 1.0f64)];
+    let start: [V; 4] = core::array::from_fn(|i| points[i][0].map(Iv::point));
+    let end: [V; 4] = core::array::from_fn(|i| points[i][1].map(Iv::point));
+    // Cheap first, on the boxes the points sweep: often enough to rule the whole step out.
+    let boxes: [V; 4] =
+        core::array::from_fn(|i| core::array::from_fn(|k| Iv::hull(start[i][k], end[i][k])));
+    let [u, v, w] = C::factors(&boxes);
+    let rough = dot(&cross(&u, &v), &w);
+    if rough.positive() || rough.negative() || C::side(&boxes) == Some(Side::Outside) {
+        return Filtered::Never;
+    }
+    let forms = C::bernstein(&start, &end);
+    if forms
+        .f
+        .iter()
+        .chain(forms.g.iter().flatten())
+        .any(|c| !c.finite())
+    {
+        return Filtered::Unknown;
+    }
+    let mut stack = vec![(0.0f64, 1.0f64, forms)];
     let mut visited = 0;
-    while let Some((t0, t1)) = stack.pop() {
+    while let Some((t0, t1, forms)) = stack.pop() {
         visited += 1;
         if visited > BUDGET {
             return Filtered::Unknown;
         }
-        // f is the determinant of three vectors linear in t, so its Bernstein coefficients
-        // on [t0, t1] are (sums of) the determinants of those vectors taken at either end:
-        // f on [t0, t1] lies within their hull, much tighter than interval evaluation.
-        let ends0: [V; 4] = core::array::from_fn(|i| at(&points[i], t0));
-        let ends1: [V; 4] = core::array::from_fn(|i| at(&points[i], t1));
-        let boxes: [V; 4] =
-            core::array::from_fn(|i| core::array::from_fn(|k| Iv::hull(ends0[i][k], ends1[i][k])));
-        // The plain interval value first: it is cheaper and often enough.
-        let [u, v, w] = C::factors(&boxes);
-        let rough = dot(&cross(&u, &v), &w);
-        if rough.positive() || rough.negative() {
+        let f = &forms.f;
+        if signed(f) {
             continue;
         }
-        let side = match C::side(&boxes) {
-            None => return Filtered::Unknown,
-            Some(side) => side,
-        };
-        if side == Side::Outside {
-            continue;
+        if forms.g.iter().any(|g| g.iter().all(|c| c.negative())) {
+            continue; // a condition fails throughout
         }
-        // f is the determinant of three vectors linear in t, so its Bernstein coefficients
-        // on [t0, t1] are (sums of) the determinants of those vectors taken at either end:
-        // f on [t0, t1] lies within their hull, much tighter than interval evaluation.
-        let (x, y) = (C::factors(&ends0), C::factors(&ends1));
-        let (xx, xy, yx, yy) = (
-            cross(&x[0], &x[1]),
-            cross(&x[0], &y[1]),
-            cross(&y[0], &x[1]),
-            cross(&y[0], &y[1]),
-        );
-        let b0 = dot(&xx, &x[2]);
-        let b3 = dot(&yy, &y[2]);
-        let b1 = dot(&yx, &x[2]).add(dot(&xy, &x[2])).add(dot(&xx, &y[2]));
-        let b2 = dot(&yy, &x[2]).add(dot(&yx, &y[2])).add(dot(&xy, &y[2]));
-        let coefficients = [b0, b1, b2, b3];
-        if coefficients.iter().any(|b| !b.finite()) {
-            return Filtered::Unknown;
-        }
-        if coefficients.iter().all(|b| b.positive()) || coefficients.iter().all(|b| b.negative()) {
-            continue;
-        }
-
-        if side == Side::Inside {
-            let crossing = (b0.positive() && b3.negative()) || (b0.negative() && b3.positive());
-            if crossing && t1 - t0 <= tolerance {
-                return Filtered::Within(t0, t1);
-            }
+        let inside = forms.g.iter().all(|g| g.iter().all(|c| c.positive()));
+        let crossing = (f[0].positive() && f[3].negative()) || (f[0].negative() && f[3].positive());
+        if inside && crossing && t1 - t0 <= tolerance {
+            return Filtered::Within(t0, t1);
         }
         // Where `f` may vanish at an end of the interval (an exact root there, typically a
         // contact at the start of the step), no sub-interval touching that end can be proved
-        // either way unless the conditions rule it out there: leave it to the exact decision
+        // either way unless a condition rules that end out: leave it to the exact decision
         // rather than split towards it.
-        let ruled_out_at = |t: f64| {
-            let point: [V; 4] = core::array::from_fn(|i| at(&points[i], t));
-            C::side(&point) == Some(Side::Outside)
-        };
-        if (!b0.positive() && !b0.negative() && !ruled_out_at(t0))
-            || (!b3.positive() && !b3.negative() && !ruled_out_at(t1))
-        {
+        let ruled_out = |k: usize| forms.g.iter().any(|g| g[k].negative());
+        let open = |c: Iv| !c.positive() && !c.negative();
+        if (open(f[0]) && !ruled_out(0)) || (open(f[3]) && !ruled_out(4)) {
             return Filtered::Unknown;
         }
         let mid = 0.5 * (t0 + t1);
-        if side != Side::Inside && t1 - t0 < NARROWEST {
+        if !inside && t1 - t0 < NARROWEST {
             return Filtered::Unknown;
         }
         if !(t0 < mid && mid < t1) {
             return Filtered::Unknown;
         }
-        stack.push((mid, t1));
-        stack.push((t0, mid));
+        let (left, right) = split_forms(&forms);
+        stack.push((mid, t1, right));
+        stack.push((t0, mid, left));
     }
     Filtered::Never
 }
