@@ -243,30 +243,31 @@ trait Conditions<const N: usize> {
     fn factors(x: &[V; N]) -> [V; 3];
     /// The conditions `gᵢ ≥ 0` on the boxes.
     fn side(x: &[V; N]) -> Option<Side>;
-    /// `f` and the conditions in Bernstein form on `[0, 1]`, from the points at both ends.
-    fn bernstein(start: &[V; N], end: &[V; N]) -> Forms;
+    /// `f` in Bernstein form on `[0, 1]` from the points at both ends, and the normal `n` (a
+    /// quadratic, from [`quadratic_cross`]) the conditions are made of.
+    fn coplanarity_form(start: &[V; N], end: &[V; N]) -> ([Iv; 4], [V; 3]);
+    /// The conditions in Bernstein form on `[0, 1]`.
+    fn condition_forms(start: &[V; N], end: &[V; N], n: &[V; 3]) -> [[Iv; 5]; 4];
 }
 
 /// Vertex `p` against triangle `abc`.
 pub(crate) struct VertexFace;
 
 impl Conditions<4> for VertexFace {
-    fn bernstein(s: &[V; 4], e: &[V; 4]) -> Forms {
-        let (e1, e2, w) = (
-            [sub(&s[2], &s[1]), sub(&e[2], &e[1])],
-            [sub(&s[3], &s[1]), sub(&e[3], &e[1])],
-            [sub(&s[0], &s[1]), sub(&e[0], &e[1])],
-        );
+    fn coplanarity_form(s: &[V; 4], e: &[V; 4]) -> ([Iv; 4], [V; 3]) {
+        let e1 = [sub(&s[2], &s[1]), sub(&e[2], &e[1])];
+        let e2 = [sub(&s[3], &s[1]), sub(&e[3], &e[1])];
+        let w = [sub(&s[0], &s[1]), sub(&e[0], &e[1])];
         let n = quadratic_cross(&e1, &e2);
+        (cubic_det(&n, &w), n)
+    }
+    fn condition_forms(s: &[V; 4], e: &[V; 4], n: &[V; 3]) -> [[Iv; 5]; 4] {
         let side = |u: usize, v: usize| {
             let d = [sub(&s[v], &s[u]), sub(&e[v], &e[u])];
             let r = [sub(&s[0], &s[u]), sub(&e[0], &e[u])];
-            quartic_dot(&quadratic_cross(&d, &r), &n)
+            quartic_dot(&quadratic_cross(&d, &r), n)
         };
-        Forms {
-            f: cubic_det(&n, &w),
-            g: [side(1, 2), side(2, 3), side(3, 1), [Iv::point(1.0); 5]],
-        }
+        [side(1, 2), side(2, 3), side(3, 1), [Iv::point(1.0); 5]]
     }
     fn factors(x: &[V; 4]) -> [V; 3] {
         let [p, a, b, c] = x;
@@ -287,23 +288,26 @@ impl Conditions<4> for VertexFace {
 pub(crate) struct EdgeEdge;
 
 impl Conditions<4> for EdgeEdge {
-    fn bernstein(s: &[V; 4], e: &[V; 4]) -> Forms {
+    fn coplanarity_form(s: &[V; 4], e: &[V; 4]) -> ([Iv; 4], [V; 3]) {
         let ea = [sub(&s[1], &s[0]), sub(&e[1], &e[0])];
         let eb = [sub(&s[3], &s[2]), sub(&e[3], &e[2])];
         let d = [sub(&s[2], &s[0]), sub(&e[2], &e[0])];
         let n = quadratic_cross(&ea, &eb);
-        let nn = quartic_dot(&n, &n);
-        let u = quartic_dot(&quadratic_cross(&d, &eb), &n);
-        let v = quartic_dot(&quadratic_cross(&d, &ea), &n);
-        Forms {
-            f: cubic_det(&n, &d),
-            g: [
-                u,
-                v,
-                core::array::from_fn(|k| nn[k].sub(u[k])),
-                core::array::from_fn(|k| nn[k].sub(v[k])),
-            ],
-        }
+        (cubic_det(&n, &d), n)
+    }
+    fn condition_forms(s: &[V; 4], e: &[V; 4], n: &[V; 3]) -> [[Iv; 5]; 4] {
+        let ea = [sub(&s[1], &s[0]), sub(&e[1], &e[0])];
+        let eb = [sub(&s[3], &s[2]), sub(&e[3], &e[2])];
+        let d = [sub(&s[2], &s[0]), sub(&e[2], &e[0])];
+        let nn = quartic_dot(n, n);
+        let u = quartic_dot(&quadratic_cross(&d, &eb), n);
+        let v = quartic_dot(&quadratic_cross(&d, &ea), n);
+        [
+            u,
+            v,
+            core::array::from_fn(|k| nn[k].sub(u[k])),
+            core::array::from_fn(|k| nn[k].sub(v[k])),
+        ]
     }
     fn factors(x: &[V; 4]) -> [V; 3] {
         let [a0, a1, b0, b1] = x;
@@ -365,10 +369,22 @@ fn search<C: Conditions<4>>(points: &[[[f64; 3]; 2]; 4], tolerance: f64) -> Filt
         core::array::from_fn(|i| core::array::from_fn(|k| Iv::hull(start[i][k], end[i][k])));
     let [u, v, w] = C::factors(&boxes);
     let rough = dot(&cross(&u, &v), &w);
-    if rough.positive() || rough.negative() || C::side(&boxes) == Some(Side::Outside) {
+    if rough.positive() || rough.negative() {
         return Filtered::Never;
     }
-    let forms = C::bernstein(&start, &end);
+    // Then the coplanarity cubic's Bernstein bounds (no root in the step: no contact), then
+    // the conditions on the boxes, and only then the conditions' own Bernstein forms.
+    let (f, n) = C::coplanarity_form(&start, &end);
+    if signed(&f) {
+        return Filtered::Never;
+    }
+    if C::side(&boxes) == Some(Side::Outside) {
+        return Filtered::Never;
+    }
+    let forms = Forms {
+        f,
+        g: C::condition_forms(&start, &end, &n),
+    };
     if forms
         .f
         .iter()
