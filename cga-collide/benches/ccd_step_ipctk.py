@@ -3,9 +3,10 @@
 
 Setup (once): python3 -m venv /tmp/venv-ccd && /tmp/venv-ccd/bin/pip install ipctk numpy
 
-Run:
+Run (with `--cga target/release/cga`, the same frames through this repository's exact whole
+step in the same run; `cga ccd` reads the PLY itself, its time excludes reading):
 
-    /tmp/venv-ccd/bin/python cga-collide/benches/ccd_step_ipctk.py [--repeat 3] \
+    /tmp/venv-ccd/bin/python cga-collide/benches/ccd_step_ipctk.py [--repeat 3] [--cga PATH] \
         [--broad-phase hash-grid|sweep-and-prune|lbvh|brute-force] SCENE_DIR_OR_PLY_PAIR ...
 
 A scene is a folder whose `frames/` (or itself) holds exactly two PLY files, the mesh at t = 0
@@ -23,7 +24,9 @@ only, to compare with the exact whole-step self-collision of the same frames.
 """
 
 import argparse
+import json
 import pathlib
+import subprocess
 import statistics
 import sys
 import time
@@ -151,12 +154,21 @@ def main():
     ap.add_argument("scenes", nargs="+")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--broad-phase", choices=sorted(BROAD), default="hash-grid")
+    ap.add_argument(
+        "--cga",
+        help="also time `cga ccd --json FRAME0 FRAME1` (this repository's exact whole step: every "
+        "colliding pair and the first contact) on the same frames, in the same run",
+    )
     args = ap.parse_args()
     ipctk.set_logger_level(ipctk.LoggerLevel.error)
     narrow = ipctk.TightInclusionCCD(tolerance=1e-6, max_iterations=1_000_000)
 
-    print(f"| scene | vertices | faces | edges | mesh build ms | step min ms | step median ms | step size |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    ours_cols = " cga ccd min ms | pairs (vf + ee) | ratio |" if args.cga else ""
+    print(
+        "| scene | vertices | faces | edges | mesh build ms | step min ms | step median ms "
+        f"| step size |{ours_cols}"
+    )
+    print("|---|---:|---:|---:|---:|---:|---:|---:|" + ("---:|---:|---:|" if args.cga else ""))
     for name, f0, f1 in scenes(args.scenes):
         v0, faces = read_ply(f0)
         v1, faces1 = read_ply(f1)
@@ -178,9 +190,21 @@ def main():
                 mesh, v0, v1, min_distance=0.0, broad_phase=broad, narrow_phase_ccd=narrow
             )
             times.append((time.perf_counter() - t) * 1e3)
+        ours = ""
+        if args.cga:
+            best, pairs = float("inf"), None
+            for _ in range(args.repeat):
+                out = subprocess.run(
+                    [args.cga, "ccd", "--json", str(f0), str(f1)],
+                    check=True, capture_output=True, text=True,
+                )
+                report = json.loads(out.stdout)
+                best = min(best, report["millis"])
+                pairs = len(report["vertex_face"]) + len(report["edge_edge"])
+            ours = f" {best:.1f} | {pairs} | {best / min(times):.2f} |"
         print(
             f"| {name} | {len(v0)} | {len(faces)} | {len(edges)} | {build_ms:.1f} | "
-            f"{min(times):.1f} | {statistics.median(times):.1f} | {step:.6g} |"
+            f"{min(times):.1f} | {statistics.median(times):.1f} | {step:.6g} |{ours}"
         )
 
 

@@ -118,6 +118,11 @@ fn main() -> ExitCode {
                 .ok()
                 .and_then(|mut p| p.take())
                 .unwrap_or_else(|| "unknown".into());
+            // The reader of our output went away (`cga … | head`): stop quietly, as a shell
+            // tool killed by SIGPIPE would (exit status 128 + 13).
+            if what.contains("failed printing to stdout") && what.contains("Broken pipe") {
+                return ExitCode::from(141);
+            }
             eprintln!(
                 "error: internal error: {what}\n(a bug in cga or the cga-collide library: please \
                  report it with the command line and meshes; CGA_BACKTRACE=1 shows where it \
