@@ -363,21 +363,7 @@ impl Bvh {
     /// Recomputes every box for new vertex coordinates (same triangles, same tree), e.g. after
     /// transforming the vertices rigidly. Exact, like the build.
     pub fn refit(&mut self, vertices: &[Point3<f64>], triangles: &[[u32; 3]]) {
-        for (b, &t) in self.boxes.iter_mut().zip(&self.order) {
-            *b = triangle_box(vertices, &triangles[t as usize]);
-        }
-        // Children always come after their parent, so a reverse sweep is bottom-up.
-        for i in (0..self.nodes.len()).rev() {
-            let node = self.nodes[i];
-            let s = node.start as usize;
-            self.nodes[i].bounds = if node.is_leaf() {
-                self.boxes[s..s + node.count as usize]
-                    .iter()
-                    .fold(Aabb::EMPTY, |acc, b| acc.union(b))
-            } else {
-                self.nodes[s].bounds.union(&self.nodes[s + 1].bounds)
-            };
-        }
+        self.refit_boxes(|t| triangle_box(vertices, &triangles[t as usize]));
     }
 
     /// Recomputes every box from `leaf_box(i)` for leaf `i` (same tree, no rebuild): e.g. the
@@ -386,6 +372,7 @@ impl Bvh {
         for (b, &t) in self.boxes.iter_mut().zip(&self.order) {
             *b = leaf_box(t);
         }
+        // Children always come after their parent, so a reverse sweep is bottom-up.
         for i in (0..self.nodes.len()).rev() {
             let node = self.nodes[i];
             let s = node.start as usize;

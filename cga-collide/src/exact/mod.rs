@@ -31,6 +31,7 @@ pub use balls::{ball_inside, balls_meet, balls_meet_exact};
 pub use bounded_f64::ErrF64;
 pub use certified::{all_zero, decide, CertifiedScalar};
 pub use kernel::{ExactKernel, ExactPlane, FloatKernel, FloatPlane, Kernel, PlaneSide};
+pub(crate) use sign::decode;
 pub use sign::{
     exact_sign, integer_scaled, rational_exact_sign, rational_sign, BigInteger, Predicate,
 };

@@ -163,8 +163,8 @@ pub(crate) fn slow_sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Orderi
     exact_sign::<P, N>(x)
 }
 
-/// `x = sign · mantissa · 2^exponent` with an integer mantissa.
-fn decode(x: f64) -> (u64, i16, i8) {
+/// `x = sign · mantissa · 2^exponent` with an integer mantissa (finite `x`).
+pub(crate) fn decode(x: f64) -> (u64, i16, i8) {
     let bits = x.to_bits();
     let sign: i8 = if bits >> 63 == 0 { 1 } else { -1 };
     let exponent = ((bits >> 52) & 0x7ff) as i16;

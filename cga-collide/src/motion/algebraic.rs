@@ -29,6 +29,7 @@ use core::cmp::Ordering;
 use num_bigint::BigInt;
 
 use super::polynomial::{roots_in_unit, Instant, Poly};
+use crate::exact::decode;
 
 /// A point moving linearly: its three coordinates as polynomials in `t` of degree ≤ 1.
 pub(crate) type Track = [Poly; 3];
@@ -47,7 +48,7 @@ pub(crate) fn tracks<const N: usize>(points: &[[[f64; 3]; 2]; N]) -> [Track; N] 
 }
 
 fn scaled_integers(x: &[f64]) -> Vec<BigInt> {
-    let parts: Vec<(u64, i32, bool)> = x.iter().map(|&v| decode(v)).collect();
+    let parts: Vec<(u64, i16, i8)> = x.iter().map(|&v| decode(v)).collect();
     let min_exp = parts
         .iter()
         .filter(|p| p.0 != 0)
@@ -56,27 +57,15 @@ fn scaled_integers(x: &[f64]) -> Vec<BigInt> {
         .unwrap_or(0);
     parts
         .iter()
-        .map(|&(m, e, negative)| {
+        .map(|&(m, e, sign)| {
             let v = BigInt::from(m) << (e - min_exp) as usize;
-            if negative {
+            if sign < 0 {
                 -v
             } else {
                 v
             }
         })
         .collect()
-}
-
-/// `|x| = mantissa · 2^exponent` (finite `x`).
-fn decode(x: f64) -> (u64, i32, bool) {
-    let bits = x.to_bits();
-    let exponent = ((bits >> 52) & 0x7ff) as i32;
-    let mantissa = if exponent == 0 {
-        (bits & 0xf_ffff_ffff_ffff) << 1
-    } else {
-        (bits & 0xf_ffff_ffff_ffff) | (1 << 52)
-    };
-    (mantissa, exponent - 1075, bits >> 63 == 1)
 }
 
 fn sub(a: &Track, b: &Track) -> Track {

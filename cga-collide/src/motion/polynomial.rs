@@ -123,31 +123,9 @@ impl Poly {
         }
     }
 
-    /// A positive multiple of the remainder of `self` divided by `d` (`d` non-zero).
-    fn positive_remainder(&self, d: &Poly) -> Poly {
-        let dd = d.degree();
-        let l = d.lead().abs();
-        let s = d.lead().sign();
-        let mut r = self.clone();
-        while !r.is_zero() && r.degree() >= dd {
-            let shift = r.degree() - dd;
-            let lr = r.lead().clone();
-            let mut c: Vec<BigInt> = r.0.iter().map(|x| x * &l).collect();
-            for (j, dj) in d.0.iter().enumerate() {
-                let term = &lr * dj;
-                if s == Sign::Minus {
-                    c[j + shift] += term;
-                } else {
-                    c[j + shift] -= term;
-                }
-            }
-            r = Poly::new(c);
-        }
-        r.primitive()
-    }
-
-    /// `self / d` when `d` divides `self` exactly over the rationals, up to a positive factor.
-    fn divided_by(&self, d: &Poly) -> Poly {
+    /// Pseudo-division by `d` (non-zero) up to a positive factor: `(q, r)` with
+    /// `|lc(d)|^k · self = q·d + r` and `deg r < deg d`.
+    fn pseudo_divide(&self, d: &Poly) -> (Poly, Poly) {
         let dd = d.degree();
         let l = d.lead().abs();
         let s = d.lead().sign();
@@ -171,7 +149,17 @@ impl Poly {
             }
             r = Poly::new(c);
         }
-        Poly::new(q).primitive()
+        (Poly::new(q), r)
+    }
+
+    /// A positive multiple of the remainder of `self` divided by `d` (`d` non-zero).
+    fn positive_remainder(&self, d: &Poly) -> Poly {
+        self.pseudo_divide(d).1.primitive()
+    }
+
+    /// `self / d` when `d` divides `self` exactly over the rationals, up to a positive factor.
+    fn divided_by(&self, d: &Poly) -> Poly {
+        self.pseudo_divide(d).0.primitive()
     }
 
     /// The signed remainder sequence `self, other, −rem, …` up to positive factors (for
