@@ -7,6 +7,9 @@ under ``(4, 4)`` float64 poses, and ``a.x_batch(b, poses_a, poses_b)`` for ``(k,
 of poses at once. A :class:`Scene` holds many placed colliders. Errors are :class:`CgaError`
 (a ``ValueError``) with the library's message; wrong dtypes are ``TypeError``.
 
+``cga_collide.motion`` is continuous collision (motion between two poses), with the Rust module's
+names; ``Collider.contacts_during`` asks it of two colliders.
+
 ``cga_collide.trimesh.CollisionManager`` is a drop-in for ``trimesh.collision.CollisionManager``.
 """
 
@@ -19,6 +22,7 @@ from ._native import (
     ObjectId,
     Scene,
 )
+from . import motion
 
 __all__ = [
     "CgaError",
@@ -28,4 +32,5 @@ __all__ = [
     "ObjectId",
     "ROTATION_TOLERANCE",
     "Scene",
+    "motion",
 ]

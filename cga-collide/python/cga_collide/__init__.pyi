@@ -7,6 +7,9 @@ from typing import List, Literal, Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
+from . import motion as motion
+from .motion import MotionContacts
+
 Float64Array = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.integer]
 Int64Array = npt.NDArray[np.int64]
@@ -110,6 +113,10 @@ class Collider:
     def contact_class_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> ContactClass: ...
     def contacts(self, other: Collider) -> List[Contact]: ...
     def contacts_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> List[Contact]: ...
+    # motion between two poses (continuous collision; see cga_collide.motion)
+    def contacts_during(
+        self, poses: Float64Array, other: Collider, other_poses: Float64Array, tolerance: float = 1e-9
+    ) -> MotionContacts: ...
     # self-intersection
     def self_intersections(self) -> Int64Array: ...
     def self_intersects(self) -> bool: ...
@@ -172,4 +179,5 @@ __all__ = [
     "ObjectId",
     "ROTATION_TOLERANCE",
     "Scene",
+    "motion",
 ]

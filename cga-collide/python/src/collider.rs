@@ -714,6 +714,25 @@ impl Collider {
         cs.iter().map(|(ij, g)| contact_tuple(py, *ij, g)).collect()
     }
 
+    // ------------------------------------------------------------------ motion
+
+    /// Every vertex–face and edge–edge pair of ``self`` and ``other`` that touches while
+    /// ``self`` moves from ``poses[0]`` to ``poses[1]`` and ``other`` from ``other_poses[0]`` to
+    /// ``other_poses[1]`` (``(2, 4, 4)`` float64 arrays; each vertex moves linearly between its
+    /// two placed positions), exactly, with the first contact time bounded to ``tolerance``.
+    /// Returns a ``cga_collide.motion.MotionContacts``; a refused pose raises ``CgaError``.
+    #[pyo3(signature = (poses, other, other_poses, tolerance = 1e-9))]
+    fn contacts_during(
+        &self,
+        py: Python<'_>,
+        poses: &Bound<'_, PyAny>,
+        other: &Collider,
+        other_poses: &Bound<'_, PyAny>,
+        tolerance: f64,
+    ) -> PyResult<crate::motion::MotionContacts> {
+        crate::motion::contacts_during(py, &self.inner, poses, &other.inner, other_poses, tolerance)
+    }
+
     // ------------------------------------------------------------------ self-intersection
 
     /// Every pair of non-adjacent triangles of the mesh that intersect, ``(p, 2)`` int64.

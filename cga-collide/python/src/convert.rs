@@ -93,10 +93,15 @@ pub fn check_shape(shape: &[usize], want: &[Option<usize>], name: &str) -> PyRes
 
 /// The vertices of a mesh: an `(n, 3)` float64 array.
 pub fn vertices(obj: &Bound<'_, PyAny>) -> PyResult<Vec<Point3<f64>>> {
-    let a = f64_array(obj, "vertices")?;
+    points(obj, "vertices")
+}
+
+/// Points from an `(n, 3)` float64 array; `name` says which argument in errors.
+pub fn points(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Point3<f64>>> {
+    let a = f64_array(obj, name)?;
     let r = a.readonly();
     let v = r.as_array();
-    check_shape(v.shape(), &[None, Some(3)], "vertices")?;
+    check_shape(v.shape(), &[None, Some(3)], name)?;
     Ok(v.outer_iter()
         .map(|row| Point3::new(row[0], row[1], row[2]))
         .collect())
@@ -235,6 +240,24 @@ pub fn poses(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Isometry3<f64>>
         .enumerate()
         .map(|(k, m)| pose_of(&m, &format!("{name}[{k}]")))
         .collect()
+}
+
+/// A motion between two poses: a `(2, 4, 4)` float64 array (the pose at `t = 0`, then at
+/// `t = 1`).
+pub fn pose_motion(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<[Isometry3<f64>; 2]> {
+    let a = f64_array(obj, name)?;
+    let r = a.readonly();
+    let v = r.as_array();
+    check_shape(v.shape(), &[Some(2), Some(4), Some(4)], name)?;
+    let start = pose_of(
+        &v.index_axis(numpy::ndarray::Axis(0), 0),
+        &format!("{name}[0]"),
+    )?;
+    let end = pose_of(
+        &v.index_axis(numpy::ndarray::Axis(0), 1),
+        &format!("{name}[1]"),
+    )?;
+    Ok([start, end])
 }
 
 /// The pose pairs of a batch: `(k, 4, 4)` arrays of the same length; either may also be one

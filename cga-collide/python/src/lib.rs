@@ -7,6 +7,7 @@
 
 mod collider;
 mod convert;
+mod motion;
 mod scene;
 
 use pyo3::prelude::*;
@@ -19,6 +20,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<collider::DistanceBatch>()?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
+    motion::register(m)?;
     m.add("CgaError", m.py().get_type::<convert::CgaError>())?;
     m.add("ROTATION_TOLERANCE", convert::ROTATION_TOLERANCE)?;
     Ok(())

@@ -1,0 +1,89 @@
+"""Type stubs of cga_collide.motion (continuous collision; the Rust module's names)."""
+
+from typing import List, Optional, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+Float64Array = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.integer]
+Int64Array = npt.NDArray[np.int64]
+BoolArray = npt.NDArray[np.bool_]
+MotionPair = Union[
+    Tuple[str, int, int],  # ("vertex_face", v, f) or ("face_vertex", f, v)
+    Tuple[str, Tuple[int, int], Tuple[int, int]],  # ("edge_edge", (a0, a1), (b0, b1))
+]
+
+class ContactTime:
+    """When two primitives first touch: ``lo <= t <= hi`` for the earliest contact time."""
+
+    @property
+    def lo(self) -> float: ...
+    @property
+    def hi(self) -> float: ...
+    @property
+    def width(self) -> float: ...
+    @property
+    def is_exact(self) -> bool: ...
+    def safe_time(self) -> Optional[float]: ...
+    def __eq__(self, other: object) -> bool: ...
+
+class MotionContacts:
+    """What touches while two colliders move (``Collider.contacts_during``)."""
+
+    @property
+    def pairs(self) -> List[MotionPair]: ...
+    @property
+    def first_contact(self) -> Optional[ContactTime]: ...
+    @property
+    def first_pairs(self) -> List[MotionPair]: ...
+    @property
+    def vertex_face(self) -> Int64Array: ...
+    @property
+    def face_vertex(self) -> Int64Array: ...
+    @property
+    def edge_edge(self) -> Int64Array: ...
+    def __len__(self) -> int: ...
+
+class StepContacts:
+    """What touches during a step of a deforming mesh (``step_self_contacts``)."""
+
+    @property
+    def vertex_face(self) -> Int64Array: ...
+    @property
+    def edge_edge(self) -> Int64Array: ...
+    @property
+    def first_contact(self) -> Optional[ContactTime]: ...
+    @property
+    def vertex_face_candidates(self) -> int: ...
+    @property
+    def edge_edge_candidates(self) -> int: ...
+
+def vertex_face_touch(vertex: Float64Array, face: Float64Array) -> bool: ...
+def edge_edge_touch(a: Float64Array, b: Float64Array) -> bool: ...
+def vertex_face_first_contact(
+    vertex: Float64Array, face: Float64Array, tolerance: float = 1e-9
+) -> Optional[ContactTime]: ...
+def edge_edge_first_contact(a: Float64Array, b: Float64Array, tolerance: float = 1e-9) -> Optional[ContactTime]: ...
+def vertex_face_touch_batch(points: Float64Array) -> BoolArray: ...
+def edge_edge_touch_batch(points: Float64Array) -> BoolArray: ...
+def vertex_face_first_contact_batch(points: Float64Array, tolerance: float = 1e-9) -> Float64Array: ...
+def edge_edge_first_contact_batch(points: Float64Array, tolerance: float = 1e-9) -> Float64Array: ...
+def step_self_contacts(
+    vertices_start: Float64Array, faces: IntArray, vertices_end: Float64Array, tolerance: float = 1e-9
+) -> StepContacts: ...
+
+__all__ = [
+    "ContactTime",
+    "MotionContacts",
+    "StepContacts",
+    "edge_edge_first_contact",
+    "edge_edge_first_contact_batch",
+    "edge_edge_touch",
+    "edge_edge_touch_batch",
+    "step_self_contacts",
+    "vertex_face_first_contact",
+    "vertex_face_first_contact_batch",
+    "vertex_face_touch",
+    "vertex_face_touch_batch",
+]
