@@ -193,7 +193,7 @@ def main():
     far_ee = overhead(ti.edge_edge_ccd)
     noop_us = overhead(noop)
 
-    ti_micros, ti_net, ti_net_noop, fp, fn_, n_truth, n = [], [], 0, 0, 0, 0
+    ti_micros, ti_net, ti_net_noop, fp, fn_, n_truth, n = [], [], [], 0, 0, 0, 0
     ti_answers = {}
     slowest = (0.0, None)
     t_start = time.time()
