@@ -325,6 +325,13 @@ pub struct MotionContacts {
     inner: motion::MotionContacts,
 }
 
+impl MotionContacts {
+    /// The touching pairs of one kind, in `pairs` order.
+    fn pairs_of<T>(&self, pick: impl Fn(&MotionPair) -> Option<T>) -> Vec<T> {
+        self.inner.pairs.iter().filter_map(pick).collect()
+    }
+}
+
 #[pymethods]
 impl MotionContacts {
     /// Every pair that touches at some ``t`` in ``[0, 1]``, sorted: a list of tuples.
@@ -354,46 +361,37 @@ impl MotionContacts {
     /// The ``("vertex_face", v, f)`` pairs as a ``(p, 2)`` int64 array of ``[v, f]``.
     #[getter]
     fn vertex_face<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        let p: Vec<(u32, u32)> = self
-            .inner
-            .pairs
-            .iter()
-            .filter_map(|p| match *p {
+        convert::pairs(
+            py,
+            &self.pairs_of(|p| match *p {
                 MotionPair::VertexFace(v, f) => Some((v, f)),
                 _ => None,
-            })
-            .collect();
-        convert::pairs(py, &p)
+            }),
+        )
     }
 
     /// The ``("face_vertex", f, v)`` pairs as a ``(p, 2)`` int64 array of ``[f, v]``.
     #[getter]
     fn face_vertex<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        let p: Vec<(u32, u32)> = self
-            .inner
-            .pairs
-            .iter()
-            .filter_map(|p| match *p {
+        convert::pairs(
+            py,
+            &self.pairs_of(|p| match *p {
                 MotionPair::FaceVertex(f, v) => Some((f, v)),
                 _ => None,
-            })
-            .collect();
-        convert::pairs(py, &p)
+            }),
+        )
     }
 
     /// The ``("edge_edge", a, b)`` pairs as a ``(q, 2, 2)`` int64 array of ``[a, b]``.
     #[getter]
     fn edge_edge<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<i64>> {
-        let p: Vec<([u32; 2], [u32; 2])> = self
-            .inner
-            .pairs
-            .iter()
-            .filter_map(|p| match *p {
+        edge_pairs(
+            py,
+            &self.pairs_of(|p| match *p {
                 MotionPair::EdgeEdge(a, b) => Some((a, b)),
                 _ => None,
-            })
-            .collect();
-        edge_pairs(py, &p)
+            }),
+        )
     }
 
     /// Number of touching pairs.
