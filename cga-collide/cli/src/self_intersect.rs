@@ -36,8 +36,10 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     let collider = Collider::new(mesh);
     let build = start.elapsed();
     let start = Instant::now();
+    cga_collide::exact::reset_stage_counts();
     let pairs = collider.self_intersections();
     let millis = start.elapsed().as_secs_f64() * 1e3;
+    let stages = cga_collide::exact::stage_counts();
     if let Some(path) = &args.pairs {
         let mut out = std::io::BufWriter::new(
             fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
@@ -56,6 +58,11 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
             "build_millis": build.as_secs_f64() * 1e3,
             "millis": millis,
             "mesh": args.mesh,
+            "exact_stages": {
+                "rescaled_filter": stages.rescaled_filter,
+                "expansion": stages.expansion,
+                "big_integer": stages.big_integer,
+            },
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {

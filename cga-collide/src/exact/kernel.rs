@@ -34,6 +34,10 @@ pub trait PlaneSide {
     fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3];
     /// Whether the three vertices are collinear (the plane is undefined).
     fn is_degenerate(&self) -> bool;
+    /// An axis `k` whose normal component is certainly nonzero, when one is known cheaply:
+    /// dropping coordinate `k` then maps the plane one-to-one onto a coordinate plane, so
+    /// coplanar sets meet exactly when their projections do.
+    fn projection_axis(&self) -> Option<usize>;
 }
 
 /// How predicate signs are decided. The algorithms in [`crate::query`] are generic over it.
@@ -121,6 +125,23 @@ impl PlaneSide for FloatPlane {
     }
     fn is_degenerate(&self) -> bool {
         self.n == [0.0; 3]
+    }
+    fn projection_axis(&self) -> Option<usize> {
+        let k = largest_component(&self.n);
+        (self.n[k] != 0.0).then_some(k)
+    }
+}
+
+/// The index of the component of largest magnitude.
+#[inline]
+fn largest_component(n: &[f64; 3]) -> usize {
+    let a = [n[0].abs(), n[1].abs(), n[2].abs()];
+    if a[0] >= a[1] && a[0] >= a[2] {
+        0
+    } else if a[1] >= a[2] {
+        1
+    } else {
+        2
     }
 }
 
@@ -236,6 +257,13 @@ impl PlaneSide for ExactPlane {
             return false;
         }
         self.exact_degenerate()
+    }
+
+    #[inline]
+    fn projection_axis(&self) -> Option<usize> {
+        let k = largest_component(&self.n);
+        (self.n[k].abs() > MINOR_BOUND * self.m[k] + UNDERFLOW && self.m[k] <= PERM_MAX)
+            .then_some(k)
     }
 }
 

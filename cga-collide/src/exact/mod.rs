@@ -5,11 +5,15 @@
 //! 1. on [`ErrF64`], an `f64` with a rigorous error bound (or a cheaper semi-static filter for
 //!    plane sides, [`ExactPlane`]): the sign is taken when the bound excludes zero;
 //! 2. otherwise on the same inputs scaled to unit size (exact, predicates are homogeneous);
-//! 3. otherwise exactly, on big integers ([`BigInteger`]) or rationals.
+//! 3. otherwise exactly on floating-point expansions ([`Expansion`]: no allocation, a few dozen
+//!    `f64` operations for the typical exact zero);
+//! 4. only when the expansions cannot hold the value, exactly on big integers ([`BigInteger`]).
 //!
 //! | item | what it is |
 //! |---|---|
 //! | [`ErrF64`] | `f64` value with a running error bound |
+//! | [`Expansion`] | exact sums and products of `f64` in fixed storage |
+//! | [`stage_counts`] | how many signs each stage after the first filter decided |
 //! | [`Predicate`], [`exact_sign`] | a polynomial predicate and its exact sign |
 //! | [`predicates`] | every polynomial predicate of the crate (orientation, distances, spheres) |
 //! | [`Kernel`], [`ExactKernel`], [`FloatKernel`] | how the algorithms of [`crate::query`] decide signs: exactly, or in plain `f64` (for comparison) |
@@ -22,6 +26,8 @@
 mod balls;
 mod bounded_f64;
 mod certified;
+mod counters;
+pub(crate) mod expansion;
 mod kernel;
 pub mod predicates;
 mod sign;
@@ -30,6 +36,8 @@ pub(crate) mod vector;
 pub use balls::{ball_inside, balls_meet, balls_meet_exact};
 pub use bounded_f64::ErrF64;
 pub use certified::{all_zero, decide, CertifiedScalar};
+pub use counters::{reset_stage_counts, stage_counts, StageCounts};
+pub use expansion::Expansion;
 pub use kernel::{ExactKernel, ExactPlane, FloatKernel, FloatPlane, Kernel, PlaneSide};
 pub(crate) use sign::decode;
 pub use sign::{

@@ -99,6 +99,10 @@ impl Predicate<12> for Orient3d {
         let w = sub(&v3(x, 9), &a);
         dot(&cross(&u, &v), &w)
     }
+    #[inline]
+    fn exact_sign_direct(x: &[f64; 12]) -> Option<core::cmp::Ordering> {
+        crate::exact::expansion::orient3d_sign(x)
+    }
 }
 
 macro_rules! normal_component {
@@ -143,6 +147,10 @@ impl Predicate<6> for Orient2d {
         let vx = x[4].clone() - x[0].clone();
         let vy = x[5].clone() - x[1].clone();
         ux * vy - uy * vx
+    }
+    #[inline]
+    fn exact_sign_direct(x: &[f64; 6]) -> Option<core::cmp::Ordering> {
+        crate::exact::expansion::orient2d_sign(x)
     }
 }
 

@@ -8,13 +8,21 @@ use core::ops::{Add, Mul, Neg, Sub};
 use ga_core::scalar::{Rational, Ring};
 use num_traits::Signed;
 
-use super::ErrF64;
+use super::{counters, ErrF64, Expansion};
 
 /// A polynomial predicate in `N` `f64` inputs, written once for every [`Ring`].
 pub trait Predicate<const N: usize> {
     /// The polynomial's value at `x` (the same straight-line code for `f64`, [`ErrF64`] and
     /// [`Rational`]).
     fn eval<R: Ring>(x: &[R; N]) -> R;
+
+    /// A hand-written exact sign for the inputs the predicate's common case covers, tried
+    /// before the generic exact evaluation (`None`: not covered, the generic stages decide).
+    /// Must agree with the sign of [`eval`](Self::eval) in exact arithmetic wherever it answers.
+    #[inline(always)]
+    fn exact_sign_direct(_x: &[f64; N]) -> Option<Ordering> {
+        None
+    }
 }
 
 /// The sign of an exact rational.
@@ -150,16 +158,41 @@ fn rescaled<const N: usize>(x: &[f64; N]) -> Option<[f64; N]> {
     }
 }
 
+/// Whether some nonzero input lies outside `[2^-60, 2^60]`, where products in the `f64` filter
+/// may underflow into its absolute error allowance or overflow.
+fn extreme_magnitudes(x: &[f64]) -> bool {
+    const LO: f64 = 8.673617379884035e-19; // 2^-60
+    const HI: f64 = 1.152921504606847e18; // 2^60
+    x.iter()
+        .any(|&v| v != 0.0 && !(v.abs() >= LO && v.abs() <= HI))
+}
+
 #[cold]
 #[inline(never)]
 pub(crate) fn slow_sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
-    // Homogeneous predicates: retry the filter at unit scale before going exact.
-    if let Some(y) = rescaled(x) {
+    if let Some(s) = P::exact_sign_direct(x) {
+        counters::count_expansion();
+        return s;
+    }
+    // Homogeneous predicates: retry the filter at unit scale before going exact (only worth it
+    // when the magnitudes are extreme: the filter's bound is relative otherwise).
+    let unit = rescaled(x);
+    if let Some(y) = unit.as_ref().filter(|_| extreme_magnitudes(x)) {
         let e: [ErrF64; N] = core::array::from_fn(|i| ErrF64::exact(y[i]));
         if let Some(s) = P::eval(&e).sign() {
+            counters::count_rescaled();
             return s;
         }
     }
+    // Exact without allocation, unless the value needs more components than the expansions
+    // hold (or leaves their safe range).
+    let y = unit.as_ref().unwrap_or(x);
+    let e: [Expansion; N] = core::array::from_fn(|i| Expansion::from_f64(y[i]));
+    if let Some(s) = P::eval(&e).sign() {
+        counters::count_expansion();
+        return s;
+    }
+    counters::count_big_integer();
     exact_sign::<P, N>(x)
 }
 

@@ -12,8 +12,9 @@
 //!   classified against it (early exit when all are strictly on one side, as in Möller); in
 //!   general position two more `orient3d` signs decide (Guigue–Devillers); with vertices on the
 //!   other plane the test falls back to the six edge–triangle tests of the thesis's IV.4;
-//!   coplanar triangles are tested in the three axis projections (coplanar convex sets meet
-//!   iff all three projections meet, since one projection is injective on their plane).
+//!   coplanar triangles are tested in the axis projection that is one-to-one on their plane
+//!   (the largest component of the normal, certified nonzero; all three projections when that
+//!   is not certain: coplanar convex sets meet iff all three projections meet).
 //! * segment–triangle: plane sides of the end points, then the three `orient3d` of the line
 //!   against the edges (IV.2).
 //! * segment–segment: coplanarity by `orient3d`, then the three projections (IV.1).
@@ -213,7 +214,7 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
             (Equal, _) => (a, a),
             _ => (b, b),
         };
-        return (0..3).all(|k| {
+        return projection_axes::<K>(pl).all(|k| {
             let tt = [proj(&t[0], k), proj(&t[1], k), proj(&t[2], k)];
             seg2_tri2::<K>(&proj(a, k), &proj(b, k), &tt)
         });
@@ -226,6 +227,28 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
     let pos = o1 == Greater || o2 == Greater || o3 == Greater;
     let neg = o1 == Less || o2 == Less || o3 == Less;
     !(pos && neg)
+}
+
+/// The axes to project coplanar sets along: the plane's one-to-one projection when it is known,
+/// otherwise all three (coplanar convex sets meet iff all three projections meet, since one of
+/// them is one-to-one on the plane). Testing one projection instead of three also keeps the
+/// tests off the projections where the plane collapses to a line, whose signs are all exact
+/// zeros.
+fn projection_axes<K: Kernel>(pl: &K::Plane) -> core::ops::Range<usize> {
+    match pl.projection_axis() {
+        Some(k) => k..k + 1,
+        None => 0..3,
+    }
+}
+
+/// Coplanar triangles `p` (non-degenerate, plane `pl`) and `q`: they meet exactly when their
+/// projections do.
+fn coplanar_tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3], pl: &K::Plane) -> bool {
+    projection_axes::<K>(pl).all(|k| {
+        let a = [proj(&p[0], k), proj(&p[1], k), proj(&p[2], k)];
+        let b = [proj(&q[0], k), proj(&q[1], k), proj(&q[2], k)];
+        tri2_tri2::<K>(&a, &b)
+    })
 }
 
 #[inline]
@@ -262,9 +285,14 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
     if strictly_one_side(&dq) {
         return false;
     }
-    if all_zero(&dq) && pl1.is_degenerate() {
-        let (e0, e1) = extremes(p);
-        return seg_tri::<K>(&e0, &e1, q);
+    if all_zero(&dq) {
+        if pl1.is_degenerate() {
+            let (e0, e1) = extremes(p);
+            return seg_tri::<K>(&e0, &e1, q);
+        }
+        // `q` lies in the plane of the non-degenerate `p`: coplanar, whatever `q`'s own
+        // plane says (no need to classify `p` against it).
+        return coplanar_tri_tri::<K>(p, q, &pl1);
     }
     let pl2 = K::plane(q);
     let dp = pl2.sides(&pl1);
@@ -275,12 +303,10 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         let (e0, e1) = extremes(q);
         return seg_tri_plane::<K>(&e0, &e1, p, &pl1);
     }
-    if dq.iter().all(|&s| s == Equal) || dp.iter().all(|&s| s == Equal) {
-        return (0..3).all(|k| {
-            let a = [proj(&p[0], k), proj(&p[1], k), proj(&p[2], k)];
-            let b = [proj(&q[0], k), proj(&q[1], k), proj(&q[2], k)];
-            tri2_tri2::<K>(&a, &b)
-        });
+    if all_zero(&dp) {
+        // `p` in the plane of the non-degenerate `q` (`dq` not all zero: not reached for exact
+        // signs, kept for kernels that round).
+        return coplanar_tri_tri::<K>(q, p, &pl2);
     }
     if dq.iter().all(|&s| s != Equal) && dp.iter().all(|&s| s != Equal) {
         // General position (Guigue–Devillers): put the lonely vertices first, orient both so
