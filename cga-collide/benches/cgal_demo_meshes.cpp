@@ -22,6 +22,8 @@
 //     Timed best and mean of REPEAT runs, building the boxes included. Writes the sorted pairs
 //     to OUT_FILE and prints one JSON line.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -111,8 +113,17 @@ static std::array<Point, 3> corners(const Mesh& m, Face f) {
 // Reads a mesh; triangulates it when needed (sets `triangulated`). Throws on failure.
 static Mesh read_mesh(const std::string& path, bool& triangulated) {
   Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(path, mesh))
-    throw std::runtime_error("CGAL::IO::read_polygon_mesh failed (unreadable or not a 2-manifold polygon mesh)");
+  if (!CGAL::IO::read_polygon_mesh(path, mesh)) {
+    // Not a 2-manifold polygon mesh as written (e.g. the *-shuffled meshes, whose faces are
+    // inconsistently oriented): read the soup, orient it, and build the mesh from it (faces
+    // keep the file's order; points on non-manifold vertices may be duplicated).
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    if (!CGAL::IO::read_polygon_soup(path, points, polygons) || polygons.empty())
+      throw std::runtime_error("CGAL::IO::read_polygon_mesh and read_polygon_soup failed");
+    PMP::orient_polygon_soup(points, polygons);
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  }
   triangulated = false;
   if (!CGAL::is_triangle_mesh(mesh)) {
     if (!PMP::triangulate_faces(mesh)) throw std::runtime_error("PMP::triangulate_faces failed");

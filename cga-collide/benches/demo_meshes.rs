@@ -33,13 +33,15 @@ use serde_json::{json, Value};
 
 type Res<T> = Result<T, Box<dyn Error + Send + Sync>>;
 
-/// The library's stage counters, printed under `"counters"` in every JSON line.
-///
-/// THE ONE PLACE TO WIRE THEM: the library exposes no counters yet (a future
-/// `cga_collide::exact::stage_counts()` would be returned here as JSON, and reset before each
-/// mesh if it accumulates). Until then this is `null`.
+/// The library's stage counters for the last run (how many signs each exact stage after the
+/// first `f64` filter decided), printed under `"counters"` in every JSON line.
 fn counters_json() -> Value {
-    Value::Null
+    let c = cga_collide::exact::stage_counts();
+    json!({
+        "rescaled_filter": c.rescaled_filter,
+        "expansion": c.expansion,
+        "big_integer": c.big_integer,
+    })
 }
 
 /// The file name of a path (the key both programs print under `"mesh"`, `"a"`, `"b"`).
@@ -117,6 +119,7 @@ fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
     let mut pairs = Vec::new();
     for _ in 0..repeat {
         let copy = mesh.clone();
+        cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
         let collider = Collider::new(copy);
         let build = ms(t0);
@@ -170,6 +173,7 @@ fn pair_mode(a: &str, b: &str, repeat: usize, out_file: &str) -> Res<()> {
     let mut pairs = Vec::new();
     for _ in 0..repeat {
         let (ca, cb) = (ma.clone(), mb.clone());
+        cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
         let (ca, cb) = (Collider::new(ca), Collider::new(cb));
         let build = ms(t0);

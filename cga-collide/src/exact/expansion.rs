@@ -24,7 +24,7 @@ use core::ops::{Add, Mul, Neg, Sub};
 use ga_core::scalar::Ring;
 
 /// The most components an [`Expansion`] holds (values needing more are poisoned).
-pub const CAPACITY: usize = 24;
+pub const CAPACITY: usize = 16;
 
 /// `2^27 + 1`: Dekker's splitter for 53-bit significands.
 const SPLITTER: f64 = 134_217_729.0;
@@ -387,12 +387,42 @@ impl Expansion {
         }
     }
 
+    /// A value whose first `n` components were written into `self.c`.
+    #[inline(always)]
+    fn finish(mut self, mut n: usize) -> Self {
+        if n > 8 {
+            n = compress(&mut self.c[..n]);
+        }
+        if n > 0 && !(self.c[n - 1].abs() < HUGE) {
+            return Self::POISON;
+        }
+        // A single zero component is zero.
+        self.len = if n == 1 && self.c[0] == 0.0 {
+            0
+        } else {
+            n as u8
+        };
+        self
+    }
+
+    const EMPTY: Expansion = Expansion {
+        len: 0,
+        poisoned: false,
+        c: [0.0; CAPACITY],
+    };
+
     fn plus(&self, rhs: &Expansion) -> Expansion {
         if self.poisoned || rhs.poisoned {
             return Self::POISON;
         }
+        let (e, f) = (self.components(), rhs.components());
+        if e.len() + f.len() <= CAPACITY {
+            let mut out = Self::EMPTY;
+            let n = sum_into(e, f, &mut out.c);
+            return out.finish(n);
+        }
         let mut h = [0.0f64; 3 * CAPACITY];
-        let n = sum_into(self.components(), rhs.components(), &mut h);
+        let n = sum_into(e, f, &mut h);
         Self::from_list(&mut h[..n])
     }
 
@@ -402,13 +432,19 @@ impl Expansion {
         }
         let (e, f) = (self.components(), rhs.components());
         if e.is_empty() || f.is_empty() {
-            return Expansion::from_f64(0.0);
+            return Self::EMPTY;
         }
         // Exactness of the split products: nothing may underflow or overflow.
         let small = e[0].abs() * f[0].abs();
         let large = e[e.len() - 1].abs() * f[f.len() - 1].abs();
         if !(small > TINY) || !(large < HUGE) {
             return Self::POISON;
+        }
+        let (long, short) = if e.len() >= f.len() { (e, f) } else { (f, e) };
+        if short.len() == 1 && 2 * long.len() <= CAPACITY {
+            let mut out = Self::EMPTY;
+            let n = scale_into(long, short[0], &mut out.c);
+            return out.finish(n);
         }
         // Scale the longer list by each component of the shorter one and accumulate.
         let (long, short) = if e.len() >= f.len() { (e, f) } else { (f, e) };

@@ -162,6 +162,10 @@ fn seg2_tri2<K: Kernel>(a: &P2, b: &P2, t: &[P2; 3]) -> bool {
         let (e0, e1) = extremes(t);
         return seg2_seg2::<K>(a, b, &e0, &e1);
     }
+    if a == b {
+        // A point: inside the closed triangle or not (the edge tests could add nothing).
+        return point_in_tri2::<K>(a, t, s);
+    }
     point_in_tri2::<K>(a, t, s) || (0..3).any(|i| seg2_seg2::<K>(a, b, &t[i], &t[(i + 1) % 3]))
 }
 
@@ -202,8 +206,18 @@ fn seg_tri<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3]) -> bool {
 
 /// Segment against the non-degenerate triangle `t` whose plane is `pl`.
 fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool {
-    let sa = pl.side(a);
-    let sb = pl.side(b);
+    seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, pl)
+}
+
+/// [`seg_tri_plane`] with the sides `sa`, `sb` of the end points already known.
+fn seg_tri_sides<K: Kernel>(
+    a: &P3,
+    b: &P3,
+    sa: Ordering,
+    sb: Ordering,
+    t: &[P3; 3],
+    pl: &K::Plane,
+) -> bool {
     if sa == sb && sa != Equal {
         return false;
     }
@@ -325,9 +339,51 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         return orient3d::<K>(&a[0], &a[1], &b[0], &b[1]) != Greater
             && orient3d::<K>(&a[0], &a[2], &b[2], &b[0]) != Greater;
     }
-    // A vertex on the other plane: an edge of one meets the other (thesis IV.4).
-    (0..3).any(|i| seg_tri_plane::<K>(&p[i], &p[(i + 1) % 3], q, &pl2))
-        || (0..3).any(|i| seg_tri_plane::<K>(&q[i], &q[(i + 1) % 3], p, &pl1))
+    // A vertex on the other plane. Where one triangle meets the other's plane only in a vertex
+    // or an edge, that set against the other triangle decides.
+    if let Some(meet) = plane_contact::<K>(p, &dp, q, &pl2) {
+        return meet;
+    }
+    if let Some(meet) = plane_contact::<K>(q, &dq, p, &pl1) {
+        return meet;
+    }
+    // Otherwise an edge of one meets the other (thesis IV.4), with the known sides reused.
+    (0..3).any(|i| {
+        let j = (i + 1) % 3;
+        seg_tri_sides::<K>(&p[i], &p[j], dp[i], dp[j], q, &pl2)
+    }) || (0..3).any(|i| {
+        let j = (i + 1) % 3;
+        seg_tri_sides::<K>(&q[i], &q[j], dq[i], dq[j], p, &pl1)
+    })
+}
+
+/// When `t` (sides `d` against the plane `pl` of the non-degenerate triangle `u`, not all zero,
+/// not all one strict side) meets that plane only in one vertex or one edge, whether that
+/// vertex or edge meets `u`; `None` when `t` crosses the plane.
+fn plane_contact<K: Kernel>(
+    t: &[P3; 3],
+    d: &[Ordering; 3],
+    u: &[P3; 3],
+    pl: &K::Plane,
+) -> Option<bool> {
+    let zeros = d.iter().filter(|&&s| s == Equal).count();
+    let (a, b) = match zeros {
+        // An edge in the plane, the third vertex off it.
+        2 => {
+            let off = d.iter().position(|&s| s != Equal)?;
+            (&t[(off + 1) % 3], &t[(off + 2) % 3])
+        }
+        // One vertex in the plane, the other two strictly on one side.
+        1 => {
+            let on = d.iter().position(|&s| s == Equal)?;
+            if d[(on + 1) % 3] != d[(on + 2) % 3] {
+                return None;
+            }
+            (&t[on], &t[on])
+        }
+        _ => return None,
+    };
+    Some(seg_tri_sides::<K>(a, b, Equal, Equal, u, pl))
 }
 
 // ---------------------------------------------------------------- spheres and balls
