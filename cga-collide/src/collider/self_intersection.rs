@@ -22,9 +22,9 @@ use std::ops::ControlFlow;
 
 use crate::collider::{Collider, Mode};
 use crate::exact::predicates::EdgeSide;
-use crate::exact::{ExactKernel, Kernel, PlaneSide};
+use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 use crate::parallel::*;
-use crate::query::intersects::extremes;
+use crate::query::intersects::{extremes, segment_meets_triangle_with_sides};
 use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
@@ -84,21 +84,36 @@ fn opposite<'a>(t: &'a [P3; 3], v: &'a P3) -> [&'a P3; 2] {
     [far.next().unwrap_or(v), far.next().unwrap_or(v)]
 }
 
-/// Whether the corners of `t` other than its vertex `v` lie strictly on one side of the
-/// plane of the non-degenerate triangle `other` (which holds `v`): then `t` meets that plane,
-/// hence `other`, only in `v`. False when `other` is degenerate (all its signs are zero).
-fn touches_plane_only_at(t: &[P3; 3], v: &P3, other: &[P3; 3]) -> bool {
-    let [x, y] = opposite(t, v).map(|p| ExactKernel::orient3d(&other[0], &other[1], &other[2], p));
-    x != Equal && x == y
-}
-
 /// Whether triangles sharing exactly the vertex `v` meet anywhere else.
 fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
-    // Most neighbours around a vertex of a surface are told apart here, with two or four
-    // exact signs.
-    if touches_plane_only_at(p, v, q) || touches_plane_only_at(q, v, p) {
+    // Each plane once, and the far corners' sides against it once: most neighbours around a
+    // vertex of a surface are told apart by these two or four signs, and the rest reuse them.
+    let (plane_p, plane_q) = (ExactPlane::new(p), ExactPlane::new(q));
+    let (far_p, far_q) = (opposite(p, v), opposite(q, v));
+    let sides_p = far_p.map(|x| plane_q.side(x));
+    if strictly_one_side(sides_p) {
         return false;
     }
+    let sides_q = far_q.map(|x| plane_p.side(x));
+    if strictly_one_side(sides_q) {
+        return false;
+    }
+    if plane_p.is_degenerate() || plane_q.is_degenerate() {
+        return meet_beyond_vertex_degenerate(p, q, v);
+    }
+    // Non-degenerate: the far edge of one meets the other (see the module docs).
+    segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, &plane_q)
+        || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, &plane_p)
+}
+
+/// Two signs, nonzero and equal.
+#[inline]
+fn strictly_one_side(s: [core::cmp::Ordering; 2]) -> bool {
+    s[0] != Equal && s[0] == s[1]
+}
+
+/// [`meet_beyond_vertex`] when a triangle is degenerate: its parts around `v` (segments).
+fn meet_beyond_vertex_degenerate(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
     let (pp, pq) = (pieces(p, v), pieces(q, v));
     pp.iter().any(|(part_p, far_p)| {
         pq.iter()

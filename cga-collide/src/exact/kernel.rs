@@ -171,6 +171,9 @@ pub struct ExactPlane {
     p: [[f64; 3]; 3],
     n: [f64; 3],
     m: [f64; 3],
+    /// Normal components that are exactly zero because each of their two products has a
+    /// factor that is an exactly zero difference (equal coordinates: axis-aligned planes).
+    zero: [bool; 3],
 }
 
 impl ExactPlane {
@@ -185,7 +188,13 @@ impl ExactPlane {
             (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
             (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
         ];
-        ExactPlane { p: *p, n, m }
+        let z = |a: f64, b: f64| a == 0.0 || b == 0.0;
+        let zero = [
+            z(u[1], v[2]) && z(u[2], v[1]),
+            z(u[2], v[0]) && z(u[0], v[2]),
+            z(u[0], v[1]) && z(u[1], v[0]),
+        ];
+        ExactPlane { p: *p, n, m, zero }
     }
 
     /// The side of `q` when the `f64` filter alone certifies it (`None` when only the exact
@@ -220,6 +229,12 @@ impl ExactPlane {
     #[cold]
     #[inline(never)]
     fn exact_side(&self, q: &[f64; 3]) -> Ordering {
+        // An exact zero without arithmetic: every term `w_k n_k` of `n·(q - p0)` has an exactly
+        // zero factor (`q_k = p0_k`, or a normal component made of zero differences). The
+        // common case on axis-aligned faces of engineering meshes.
+        if (0..3).all(|k| self.zero[k] || q[k] == self.p[0][k]) {
+            return Ordering::Equal;
+        }
         let [a, b, c] = self.p;
         ExactKernel::sign::<crate::exact::predicates::Orient3d, 12>(&[
             a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], q[0], q[1], q[2],

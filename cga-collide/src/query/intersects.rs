@@ -49,7 +49,7 @@ use nalgebra::Point3;
 use crate::exact::predicates::{
     BallBall, EdgeSide, LineDistance, Orient2d, PlaneDistance, PointPower, SegmentDot, SphereSphere,
 };
-use crate::exact::{ExactKernel, Kernel, PlaneSide};
+use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 use crate::shape::bounded::{coords, corner_coords};
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
@@ -207,6 +207,18 @@ fn seg_tri<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3]) -> bool {
 /// Segment against the non-degenerate triangle `t` whose plane is `pl`.
 fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool {
     seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, pl)
+}
+
+/// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t`, whose plane
+/// is `pl` and against which `a` and `b` have the sides `sides` (computed once by the caller)?
+pub(crate) fn segment_meets_triangle_with_sides(
+    a: &P3,
+    b: &P3,
+    sides: [Ordering; 2],
+    t: &[P3; 3],
+    pl: &ExactPlane,
+) -> bool {
+    seg_tri_sides::<ExactKernel>(a, b, sides[0], sides[1], t, pl)
 }
 
 /// [`seg_tri_plane`] with the sides `sa`, `sb` of the end points already known.
