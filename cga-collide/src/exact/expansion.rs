@@ -242,12 +242,13 @@ fn sign_of_components(c: &[f64]) -> Ordering {
     Ordering::Equal
 }
 
-/// Whether every value is zero or of a magnitude whose products of up to three factors
-/// (and their split pieces) neither underflow nor overflow.
+/// Whether every value is zero or within `2^±200`: then products of up to three such values,
+/// and of their split pieces (whose lowest bits lie at most 52 places lower), neither
+/// underflow nor overflow.
 #[inline(always)]
 fn in_safe_range(x: &[f64]) -> bool {
-    const LO: f64 = 4.909093465297727e-91; // 2^-300
-    const HI: f64 = 2.037035976334486e90; // 2^300
+    const LO: f64 = 6.223015277861142e-61; // 2^-200
+    const HI: f64 = 1.6069380442589903e60; // 2^200
     x.iter()
         .all(|&v| v == 0.0 || (v.abs() > LO && v.abs() < HI))
 }
@@ -267,24 +268,66 @@ fn exact_differences<const M: usize>(pairs: [(f64, f64); M]) -> Option<[f64; M]>
     in_safe_range(&out).then_some(out)
 }
 
-/// The exact sign of `orient2d` (inputs as [`Orient2d`](super::predicates::Orient2d)) when
-/// the coordinate differences are exact in `f64` (the common case on meshes), else `None`.
+/// `b - a` as two nonoverlapping components `[tail, head]` (exact).
+#[inline(always)]
+fn diff2(b: f64, a: f64) -> [f64; 2] {
+    let (x, y) = two_diff(b, a);
+    [y, x]
+}
+
+/// `a · b` of two two-component values, exactly, into `out` (room for 8); returns the length.
+#[inline(always)]
+fn product22(a: &[f64; 2], b: &[f64; 2], out: &mut [f64]) -> usize {
+    let mut lo = [0.0; 4];
+    let mut hi = [0.0; 4];
+    let nl = scale_into(a, b[0], &mut lo);
+    let nh = scale_into(a, b[1], &mut hi);
+    sum_into(&lo[..nl], &hi[..nh], out)
+}
+
+/// `a · d - b · c` of two-component values, exactly, into `out` (room for 16).
+#[inline(always)]
+fn minor22(a: &[f64; 2], d: &[f64; 2], b: &[f64; 2], c: &[f64; 2], out: &mut [f64]) -> usize {
+    let mut ad = [0.0; 8];
+    let mut bc = [0.0; 8];
+    let n1 = product22(a, d, &mut ad);
+    let n2 = product22(b, c, &mut bc);
+    for x in &mut bc[..n2] {
+        *x = -*x;
+    }
+    sum_into(&ad[..n1], &bc[..n2], out)
+}
+
+/// The exact sign of `orient2d` (inputs as [`Orient2d`](super::predicates::Orient2d)),
+/// without allocation: from `f64` differences when they are exact (the common case on meshes),
+/// otherwise from two-component differences. `None` only for inputs beyond `2^±200`.
 #[inline]
 pub(crate) fn orient2d_sign(x: &[f64; 6]) -> Option<Ordering> {
-    let [ux, uy, vx, vy] =
-        exact_differences([(x[2], x[0]), (x[3], x[1]), (x[4], x[0]), (x[5], x[1])])?;
-    let (a1, a0) = two_product(ux, vy);
-    let (b1, b0) = two_product(uy, vx);
-    Some(sign_of_components(&two_two_diff(a1, a0, b1, b0)))
+    if let Some([ux, uy, vx, vy]) =
+        exact_differences([(x[2], x[0]), (x[3], x[1]), (x[4], x[0]), (x[5], x[1])])
+    {
+        let (a1, a0) = two_product(ux, vy);
+        let (b1, b0) = two_product(uy, vx);
+        return Some(sign_of_components(&two_two_diff(a1, a0, b1, b0)));
+    }
+    if !in_safe_range(x) {
+        return None;
+    }
+    let (ux, uy) = (diff2(x[2], x[0]), diff2(x[3], x[1]));
+    let (vx, vy) = (diff2(x[4], x[0]), diff2(x[5], x[1]));
+    let mut det = [0.0; 16];
+    let n = minor22(&ux, &vy, &uy, &vx, &mut det);
+    Some(sign_of_components(&det[..n]))
 }
 
 /// The exact sign of `orient3d` (inputs `[a, b, c, d]` as
-/// [`Orient3d`](super::predicates::Orient3d)) when the coordinate differences from `a` are
-/// exact in `f64`, else `None`: the three 2x2 minors as four components each, scaled and
-/// summed without rounding (Shewchuk's exact stage, without allocation).
+/// [`Orient3d`](super::predicates::Orient3d)), without allocation: the three 2x2 minors of the
+/// differences from `a`, scaled and summed without rounding (Shewchuk's exact stage). The
+/// differences are single `f64` values when exact (the common case on meshes), two components
+/// otherwise. `None` only for inputs beyond `2^±200`.
 #[inline]
 pub(crate) fn orient3d_sign(x: &[f64; 12]) -> Option<Ordering> {
-    let [u0, u1, u2, v0, v1, v2, w0, w1, w2] = exact_differences([
+    let pairs = [
         (x[3], x[0]),
         (x[4], x[1]),
         (x[5], x[2]),
@@ -294,27 +337,55 @@ pub(crate) fn orient3d_sign(x: &[f64; 12]) -> Option<Ordering> {
         (x[9], x[0]),
         (x[10], x[1]),
         (x[11], x[2]),
-    ])?;
-    // det = w · (u × v)
-    let minor = |a: f64, b: f64, c: f64, d: f64| {
-        let (p1, p0) = two_product(a, b);
-        let (q1, q0) = two_product(c, d);
-        two_two_diff(p1, p0, q1, q0)
-    };
-    let m0 = minor(u1, v2, u2, v1);
-    let m1 = minor(u2, v0, u0, v2);
-    let m2 = minor(u0, v1, u1, v0);
-    let mut s0 = [0.0; 8];
-    let mut s1 = [0.0; 8];
-    let mut s2 = [0.0; 8];
-    let n0 = scale_into(&m0, w0, &mut s0);
-    let n1 = scale_into(&m1, w1, &mut s1);
-    let n2 = scale_into(&m2, w2, &mut s2);
-    let mut t = [0.0; 16];
-    let nt = sum_into(&s0[..n0], &s1[..n1], &mut t);
-    let mut total = [0.0; 24];
-    let n = sum_into(&t[..nt], &s2[..n2], &mut total);
-    Some(sign_of_components(&total[..n]))
+    ];
+    if let Some([u0, u1, u2, v0, v1, v2, w0, w1, w2]) = exact_differences(pairs) {
+        // det = w · (u × v)
+        let minor = |a: f64, b: f64, c: f64, d: f64| {
+            let (p1, p0) = two_product(a, b);
+            let (q1, q0) = two_product(c, d);
+            two_two_diff(p1, p0, q1, q0)
+        };
+        let m = [
+            minor(u1, v2, u2, v1),
+            minor(u2, v0, u0, v2),
+            minor(u0, v1, u1, v0),
+        ];
+        let mut s = [[0.0; 8]; 3];
+        let n0 = scale_into(&m[0], w0, &mut s[0]);
+        let n1 = scale_into(&m[1], w1, &mut s[1]);
+        let n2 = scale_into(&m[2], w2, &mut s[2]);
+        let mut t = [0.0; 16];
+        let nt = sum_into(&s[0][..n0], &s[1][..n1], &mut t);
+        let mut total = [0.0; 24];
+        let n = sum_into(&t[..nt], &s[2][..n2], &mut total);
+        return Some(sign_of_components(&total[..n]));
+    }
+    if !in_safe_range(x) {
+        return None;
+    }
+    let d = pairs.map(|(b, a)| diff2(b, a));
+    let [u0, u1, u2, v0, v1, v2, w0, w1, w2] = d;
+    let mut det = [0.0; 192];
+    let mut n = 0;
+    for (a, d_, b, c, w) in [
+        (&u1, &v2, &u2, &v1, &w0),
+        (&u2, &v0, &u0, &v2, &w1),
+        (&u0, &v1, &u1, &v0, &w2),
+    ] {
+        let mut minor = [0.0; 16];
+        let nm = minor22(a, d_, b, c, &mut minor);
+        let nm = compress(&mut minor[..nm]);
+        let mut lo = [0.0; 32];
+        let mut hi = [0.0; 32];
+        let nl = scale_into(&minor[..nm], w[0], &mut lo);
+        let nh = scale_into(&minor[..nm], w[1], &mut hi);
+        let mut term = [0.0; 64];
+        let k = sum_into(&lo[..nl], &hi[..nh], &mut term);
+        let mut next = [0.0; 192];
+        n = sum_into(&det[..n], &term[..k], &mut next);
+        det[..n].copy_from_slice(&next[..n]);
+    }
+    Some(sign_of_components(&det[..n]))
 }
 
 impl Expansion {
@@ -579,6 +650,46 @@ mod tests {
             y.swap(0, 3);
             let p = crate::exact::predicates::Orient3d::eval(&y);
             o.clone() * o - p.clone() * p * R::from_i64(3)
+        }
+    }
+
+    #[test]
+    fn orientations_agree_with_big_integers_on_inexact_differences() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for round in 0..20_000 {
+            let scale = [1.0, 3.1e-40, 7.9e45, 1e-3][round % 4];
+            // Four points, the last on the plane of the first three up to rounding (so the
+            // exact sign is often decided far below the filter's reach), or exactly coplanar
+            // with axis-parallel structure.
+            let a = [next(), next(), next()];
+            let u = [next(), next(), next()];
+            let v = [next(), next(), next()];
+            let (s, t) = (next(), next());
+            let x: [f64; 12] = core::array::from_fn(|i| {
+                let k = i % 3;
+                let value = match i / 3 {
+                    0 => a[k],
+                    1 => a[k] + u[k],
+                    2 => a[k] + v[k],
+                    _ => a[k] + s * u[k] + t * v[k],
+                };
+                value * scale
+            });
+            if let Some(direct) = orient3d_sign(&x) {
+                let want = exact_sign::<crate::exact::predicates::Orient3d, 12>(&x);
+                assert_eq!(direct, want, "{x:?}");
+            }
+            let y: [f64; 6] = [x[0], x[1], x[3], x[4], x[9], x[10]];
+            if let Some(direct) = orient2d_sign(&y) {
+                let want = exact_sign::<crate::exact::predicates::Orient2d, 6>(&y);
+                assert_eq!(direct, want, "{y:?}");
+            }
         }
     }
 
