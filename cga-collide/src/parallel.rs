@@ -51,3 +51,16 @@ mod sequential {
     }
     impl<I: Iterator> FindFirst for I {}
 }
+
+/// How many threads the parallel calls would use here (1 without the `parallel` feature):
+/// with one, a call site may skip the buffering that spreading work over threads needs.
+pub(crate) fn threads() -> usize {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::current_num_threads()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        1
+    }
+}

@@ -285,7 +285,8 @@ impl Collider {
     /// The corners of triangle `i` as raw coordinates (what the `f64` searches read).
     #[inline]
     pub(crate) fn corners(&self, i: u32) -> [[f64; 3]; 3] {
-        self.mesh.corners(i).map(|p| [p.x, p.y, p.z])
+        let [a, b, c] = self.mesh.corners(i);
+        [[a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]]
     }
 
     /// The exact box of triangle `i`.

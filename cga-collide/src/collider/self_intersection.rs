@@ -90,11 +90,11 @@ fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
     // vertex of a surface are told apart by these two or four signs, and the rest reuse them.
     let (plane_p, plane_q) = (ExactPlane::new(p), ExactPlane::new(q));
     let (far_p, far_q) = (opposite(p, v), opposite(q, v));
-    let sides_p = far_p.map(|x| plane_q.side(x));
+    let sides_p = [plane_q.side(far_p[0]), plane_q.side(far_p[1])];
     if strictly_one_side(sides_p) {
         return false;
     }
-    let sides_q = far_q.map(|x| plane_p.side(x));
+    let sides_q = [plane_p.side(far_q[0]), plane_p.side(far_q[1])];
     if strictly_one_side(sides_q) {
         return false;
     }
@@ -125,21 +125,28 @@ fn meet_beyond_vertex_degenerate(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
 fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
     let third = |t: &[P3; 3]| *t.iter().find(|x| *x != u && *x != v).unwrap_or(u);
     let (a, b) = (third(p), third(q));
-    match (degenerate(p), degenerate(q)) {
-        (false, false) => {
-            ExactKernel::orient3d(u, v, &a, &b) == Equal
-                && ExactKernel::sign::<EdgeSide, 12>(&[
-                    u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
-                ]) == Greater
+    let plane_p = ExactPlane::new(p);
+    if !plane_p.is_degenerate() {
+        // `b` off the plane of `p`: `q` is not degenerate (`b` is off the line `uv`) and meets
+        // that plane only in `[u, v]`. One sign decides most edges of a surface.
+        if plane_p.side(&b) != Equal {
+            return false;
         }
-        (true, true) => {
-            // All on the line `uv`: both extend past the same end.
-            let k = (0..3).find(|&k| u[k] != v[k]).unwrap_or(0);
-            let (lo, hi) = (u[k].min(v[k]), u[k].max(v[k]));
-            (a[k] > hi && b[k] > hi) || (a[k] < lo && b[k] < lo)
-        }
-        _ => false,
+        // Coplanar: they overlap when the third vertices lie on the same side of `uv`; a
+        // degenerate `q` (on the line `uv`) meets `p` only in `[u, v]`.
+        return !degenerate(q)
+            && ExactKernel::sign::<EdgeSide, 12>(&[
+                u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
+            ]) == Greater;
     }
+    if !degenerate(q) {
+        // A degenerate `p` (on the line `uv`) meets `q` only in `[u, v]`.
+        return false;
+    }
+    // All on the line `uv`: both extend past the same end.
+    let k = (0..3).find(|&k| u[k] != v[k]).unwrap_or(0);
+    let (lo, hi) = (u[k].min(v[k]), u[k].max(v[k]));
+    (a[k] > hi && b[k] > hi) || (a[k] < lo && b[k] < lo)
 }
 
 /// Whether two triangles of one mesh meet anywhere other than in what they share (see the
@@ -187,6 +194,18 @@ impl Collider {
     pub fn self_intersections(&self) -> Vec<(u32, u32)> {
         if self.mode() == Mode::Brute {
             return self.self_intersections_brute();
+        }
+        if crate::parallel::threads() == 1 {
+            // One thread: decide each pair as the tree yields it (no candidate buffer).
+            let mut out = Vec::new();
+            let _ = self.bvh().for_each_self_pair::<()>(|i, j| {
+                if meet_elsewhere(&self.corners(i), &self.corners(j)) {
+                    out.push((i.min(j), i.max(j)));
+                }
+                ControlFlow::Continue(())
+            });
+            out.sort_unstable();
+            return out;
         }
         let mut candidates = Vec::new();
         let _ = self.bvh().for_each_self_pair::<()>(|i, j| {
