@@ -54,6 +54,14 @@ fn random_mixed() -> Vec<(Triangle, Triangle)> {
         .collect()
 }
 
+/// Random pairs with every corner uniform in the unit cube: about half of them intersect (the
+/// mix the comparison with Möller's test is quoted on).
+fn random_in_cube() -> Vec<(Triangle, Triangle)> {
+    let mut rng = SplitMix64(13);
+    let mut tri = || Triangle::new(rng.point(), rng.point(), rng.point()).expect("finite");
+    (0..N).map(|_| (tri(), tri())).collect()
+}
+
 fn parry(t: &Triangle) -> ParryTriangle {
     let [a, b, c] = *t.vertices();
     ParryTriangle::new(a, b, c)
@@ -62,6 +70,7 @@ fn parry(t: &Triangle) -> ParryTriangle {
 fn tri_tri(c: &mut Criterion) {
     let id = Isometry3::identity();
     let sets = [
+        ("random_in_cube", random_in_cube()),
         ("random_mixed", random_mixed()),
         ("random_disjoint", random_pairs(false)),
         ("random_intersecting", random_pairs(true)),

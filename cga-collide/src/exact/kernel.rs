@@ -159,9 +159,12 @@ const PERM_MAX: f64 = 8.98846567431158e307; // 2^1023
 
 /// A triangle's plane for [`ExactKernel`]: the normal `n = (p1 - p0) × (p2 - p0)` and its
 /// permanents, computed once. [`PlaneSide::side`] is a semi-static filter on `n·(q - p0)`:
-/// the sign is certain when `|det| > 1e-15 · Σ|w_i|(|u_j v_k| + |u_k v_j|) + 2^-1000 (1 + Σ|w_i|)`
-/// (Shewchuk-style relative bound plus an absolute allowance for underflow) and the permanent
-/// is finite (no overflow); otherwise the exact `orient3d` decides.
+/// the sign is certain when `|det| > 1e-15 · Σ|w_i| · max_i m_i + 2^-1000 (1 + Σ|w_i|)`, with
+/// `m_i = |u_j v_k| + |u_k v_j|` (a Shewchuk-style relative bound, the permanent
+/// `Σ|w_i| m_i` bounded by one product so each point costs one multiplication, plus an
+/// absolute allowance for underflow) and that bound is finite (no overflow); otherwise the
+/// exact `orient3d` decides: an exact zero from zero differences (axis-aligned planes) first,
+/// then floating-point expansions, then big integers.
 ///
 /// In conformal terms this is the plane `P = up(p0) ∧ up(p1) ∧ up(p2) ∧ n_inf` taken in the
 /// frame translated to `p0`, where `P ∧ up(q)` is `n·(q - p0)` times the pseudoscalar (see
@@ -171,10 +174,12 @@ pub struct ExactPlane {
     p: [[f64; 3]; 3],
     n: [f64; 3],
     m: [f64; 3],
-    /// Normal components that are exactly zero because each of their two products has a
-    /// factor that is an exactly zero difference (equal coordinates: axis-aligned planes).
-    zero: [bool; 3],
+    /// `1e-15 · max m + 2^-1000`: the per-point error bound is `k · Σ|w_i| + 2^-1000`.
+    k: f64,
 }
+
+/// Bounds at or above this mean the permanent may have overflowed: no certificate.
+const BOUND_MAX: f64 = ORIENT_BOUND * PERM_MAX;
 
 impl ExactPlane {
     /// The plane of the triangle `p` with its filter data.
@@ -188,26 +193,23 @@ impl ExactPlane {
             (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
             (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
         ];
-        let z = |a: f64, b: f64| a == 0.0 || b == 0.0;
-        let zero = [
-            z(u[1], v[2]) && z(u[2], v[1]),
-            z(u[2], v[0]) && z(u[0], v[2]),
-            z(u[0], v[1]) && z(u[1], v[0]),
-        ];
-        ExactPlane { p: *p, n, m, zero }
+        let k = ORIENT_BOUND * m[0].max(m[1]).max(m[2]) + UNDERFLOW;
+        ExactPlane { p: *p, n, m, k }
     }
 
     /// The side of `q` when the `f64` filter alone certifies it (`None` when only the exact
     /// evaluation could tell): for callers that only need certain answers and have a cheaper
     /// plan B than exact arithmetic.
+    ///
+    /// The bound is the permanent's `Σ|w_i| m_i ≤ Σ|w_i| · max m` (one multiplication per point
+    /// instead of three), plus the underflow allowance.
     #[inline(always)]
     pub fn filtered_side(&self, q: &[f64; 3]) -> Option<Ordering> {
         let w = sub(q, &self.p[0]);
         let det = w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2];
-        let aw = [w[0].abs(), w[1].abs(), w[2].abs()];
-        let perm = aw[0] * self.m[0] + aw[1] * self.m[1] + aw[2] * self.m[2];
-        let bound = ORIENT_BOUND * perm + UNDERFLOW * (1.0 + (aw[0] + aw[1] + aw[2]));
-        if perm <= PERM_MAX {
+        let sum = w[0].abs() + w[1].abs() + w[2].abs();
+        let bound = sum * self.k + UNDERFLOW;
+        if bound < BOUND_MAX {
             if det > bound {
                 return Some(Ordering::Greater);
             }
@@ -232,10 +234,17 @@ impl ExactPlane {
         // An exact zero without arithmetic: every term `w_k n_k` of `n·(q - p0)` has an exactly
         // zero factor (`q_k = p0_k`, or a normal component made of zero differences). The
         // common case on axis-aligned faces of engineering meshes.
-        if (0..3).all(|k| self.zero[k] || q[k] == self.p[0][k]) {
+        let [a, b, c] = self.p;
+        let (u, v) = (sub(&b, &a), sub(&c, &a));
+        let zero = |x: f64, y: f64| x == 0.0 || y == 0.0;
+        let normal_zero = [
+            zero(u[1], v[2]) && zero(u[2], v[1]),
+            zero(u[2], v[0]) && zero(u[0], v[2]),
+            zero(u[0], v[1]) && zero(u[1], v[0]),
+        ];
+        if (0..3).all(|k| normal_zero[k] || q[k] == a[k]) {
             return Ordering::Equal;
         }
-        let [a, b, c] = self.p;
         ExactKernel::sign::<crate::exact::predicates::Orient3d, 12>(&[
             a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], q[0], q[1], q[2],
         ])
