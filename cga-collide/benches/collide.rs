@@ -54,12 +54,33 @@ fn random_mixed() -> Vec<(Triangle, Triangle)> {
         .collect()
 }
 
-/// Random pairs with every corner uniform in the unit cube: about half of them intersect (the
-/// mix the comparison with Möller's test is quoted on).
+/// Random pairs with every corner uniform in the cube `[-1, 1]³`, half of them intersecting
+/// (about 28% of such pairs do; pairs are drawn until there are `N / 2` of each answer, then
+/// shuffled): the mix the comparison with Möller's test is quoted on.
 fn random_in_cube() -> Vec<(Triangle, Triangle)> {
     let mut rng = SplitMix64(13);
-    let mut tri = || Triangle::new(rng.point(), rng.point(), rng.point()).expect("finite");
-    (0..N).map(|_| (tri(), tri())).collect()
+    let mut tri = |rng: &mut SplitMix64| {
+        Triangle::new(rng.point(), rng.point(), rng.point()).expect("finite")
+    };
+    let (mut yes, mut no) = (Vec::new(), Vec::new());
+    while yes.len() < N / 2 || no.len() < N / 2 {
+        let pair = (tri(&mut rng), tri(&mut rng));
+        let side = if pair.0.intersects(&pair.1) {
+            &mut yes
+        } else {
+            &mut no
+        };
+        if side.len() < N / 2 {
+            side.push(pair);
+        }
+    }
+    let mut out: Vec<_> = yes.into_iter().chain(no).collect();
+    // Fisher–Yates with the same generator: no pattern for the branch predictor to learn.
+    for i in (1..out.len()).rev() {
+        let j = (rng.next_u64() % (i as u64 + 1)) as usize;
+        out.swap(i, j);
+    }
+    out
 }
 
 fn parry(t: &Triangle) -> ParryTriangle {
