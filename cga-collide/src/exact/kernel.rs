@@ -245,7 +245,8 @@ impl ExactPlane {
         if (0..3).all(|k| normal_zero[k] || q[k] == a[k]) {
             return Ordering::Equal;
         }
-        ExactKernel::sign::<crate::exact::predicates::Orient3d, 12>(&[
+        // The plane's own filter already failed: straight to the exact stages.
+        slow_sign::<crate::exact::predicates::Orient3d, 12>(&[
             a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], q[0], q[1], q[2],
         ])
     }
