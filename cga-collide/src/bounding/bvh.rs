@@ -762,9 +762,8 @@ fn bin_records<const AXIS: usize>(
     scale: f32,
 ) -> [Bin; BINS] {
     let bin = |c: f32| -> usize {
-        // Clamped as floats (NaN to 0), so the conversion is a plain one.
-        let b = mn32((BINS - 1) as f32, mx32(0.0, (c - lo) * scale));
-        b as i32 as usize
+        // `as` saturates (NaN to 0); the clamp is on integers.
+        (((c - lo) * scale) as i32).clamp(0, BINS as i32 - 1) as usize
     };
     // Two sets of bins, for even and odd records: consecutive records often share a bin, and
     // one set would chain every update on the previous one.
