@@ -112,14 +112,6 @@ impl Aabb {
         d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
     }
 
-    fn centroid(&self) -> [f64; 3] {
-        [
-            self.min[0] * 0.5 + self.max[0] * 0.5,
-            self.min[1] * 0.5 + self.max[1] * 0.5,
-            self.min[2] * 0.5 + self.max[2] * 0.5,
-        ]
-    }
-
     /// Conservative test: `false` only if the closed segment `[p, q]` (exact reals) misses the
     /// box. A slab test in `f64` whose parameter interval is widened far beyond its rounding.
     pub fn may_meet_segment(&self, p: &Point3<f64>, q: &Point3<f64>) -> bool {
@@ -235,6 +227,8 @@ pub enum BuildStrategy {
 /// Largest number of triangles in a leaf.
 pub const MAX_LEAF: usize = 4;
 const BINS: usize = 16;
+/// Largest node split by a full SAH sweep over its sorted centroids rather than by bins.
+const SWEEP: usize = 16;
 
 /// A node: its box, and either a leaf range of [`Bvh::order`] (`count > 0`) or the index of
 /// its left child (the right one follows it).
@@ -280,84 +274,49 @@ impl Bvh {
         triangles: &[[u32; 3]],
         strategy: BuildStrategy,
     ) -> Bvh {
-        let tri_boxes: Vec<Aabb> = triangles
+        let recs = triangles
             .iter()
-            .map(|t| triangle_box(vertices, t))
+            .enumerate()
+            .map(|(t, tri)| Record::new(&triangle_box(vertices, tri), t as u32))
             .collect();
-        Self::from_boxes(tri_boxes, strategy)
+        let (nodes, order) = shape(recs, strategy);
+        // The exact boxes in leaf order, straight from the triangles (no box array in triangle
+        // order to allocate and gather from).
+        let boxes = order
+            .iter()
+            .map(|&t| triangle_box(vertices, &triangles[t as usize]))
+            .collect();
+        let mut bvh = Bvh {
+            nodes,
+            order,
+            boxes,
+        };
+        bvh.refit_nodes();
+        bvh
     }
 
     /// Builds the hierarchy over arbitrary boxes (leaf `i` is `boxes[i]`): e.g. the boxes that
     /// moving primitives sweep during a time step. [`refit`](Self::refit) applies only to
     /// hierarchies over triangles.
+    ///
+    /// The splits are chosen on `f32` copies of the boxes (half the memory to move, and only a
+    /// heuristic: any split is correct); the boxes of the tree are then computed exactly from
+    /// the `f64` boxes, bottom-up, as [`refit_boxes`](Self::refit_boxes) does.
     pub fn from_boxes(tri_boxes: Vec<Aabb>, strategy: BuildStrategy) -> Bvh {
-        let n = tri_boxes.len();
-        let centroids: Vec<[f64; 3]> = tri_boxes.iter().map(Aabb::centroid).collect();
-        let mut order: Vec<u32> = (0..n as u32).collect();
-        let mut nodes = Vec::with_capacity(2 * n / MAX_LEAF + 1);
-        nodes.push(BvhNode {
-            bounds: Aabb::EMPTY,
-            start: 0,
-            count: 0,
-        });
-        let mut stack = vec![(0usize, 0usize, n)];
-        while let Some((ni, s, e)) = stack.pop() {
-            let mut bounds = Aabb::EMPTY;
-            let mut cb = Aabb::EMPTY;
-            for &t in &order[s..e] {
-                bounds = bounds.union(&tri_boxes[t as usize]);
-                let c = centroids[t as usize];
-                cb = cb.union(&Aabb { min: c, max: c });
-            }
-            nodes[ni].bounds = bounds;
-            let count = e - s;
-            if count <= MAX_LEAF {
-                nodes[ni].start = s as u32;
-                nodes[ni].count = count as u32;
-                continue;
-            }
-            let ext = [
-                cb.max[0] - cb.min[0],
-                cb.max[1] - cb.min[1],
-                cb.max[2] - cb.min[2],
-            ];
-            let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
-                0
-            } else if ext[1] >= ext[2] {
-                1
-            } else {
-                2
-            };
-            let mut mid = None;
-            if strategy == BuildStrategy::Sah && ext[axis] > 0.0 {
-                mid = sah_split(&mut order[s..e], &tri_boxes, &centroids, &cb, axis).map(|m| s + m);
-            }
-            let mid = mid.unwrap_or_else(|| {
-                let m = count / 2;
-                order[s..e].select_nth_unstable_by(m, |&a, &b| {
-                    centroids[a as usize][axis].total_cmp(&centroids[b as usize][axis])
-                });
-                s + m
-            });
-            let left = nodes.len();
-            let blank = BvhNode {
-                bounds: Aabb::EMPTY,
-                start: 0,
-                count: 0,
-            };
-            nodes.push(blank);
-            nodes.push(blank);
-            nodes[ni].start = left as u32;
-            nodes[ni].count = 0;
-            stack.push((left + 1, mid, e));
-            stack.push((left, s, mid));
-        }
+        let recs = tri_boxes
+            .iter()
+            .enumerate()
+            .map(|(t, b)| Record::new(b, t as u32))
+            .collect();
+        let (nodes, order) = shape(recs, strategy);
         let boxes = order.iter().map(|&t| tri_boxes[t as usize]).collect();
-        Bvh {
+        let mut bvh = Bvh {
             nodes,
             order,
             boxes,
-        }
+        };
+        bvh.refit_nodes();
+        bvh
     }
 
     /// Recomputes every box for new vertex coordinates (same triangles, same tree), e.g. after
@@ -371,6 +330,14 @@ impl Bvh {
     pub fn refit_boxes(&mut self, leaf_box: impl Fn(u32) -> Aabb) {
         for (b, &t) in self.boxes.iter_mut().zip(&self.order) {
             *b = leaf_box(t);
+        }
+        self.refit_nodes();
+    }
+
+    /// Recomputes every node's box from the leaf boxes (exact).
+    fn refit_nodes(&mut self) {
+        if self.order.is_empty() {
+            return; // the root of no boxes (count 0) is not a leaf, and has the empty box
         }
         // Children always come after their parent, so a reverse sweep is bottom-up.
         for i in (0..self.nodes.len()).rev() {
@@ -569,43 +536,283 @@ impl Bvh {
     }
 }
 
-/// Binned SAH split of `order` along `axis`; returns the split position, or `None` when no
-/// split beats keeping it whole (only for small ranges) or a side would be empty.
-fn sah_split(
-    order: &mut [u32],
-    boxes: &[Aabb],
-    centroids: &[[f64; 3]],
-    cb: &Aabb,
-    axis: usize,
-) -> Option<usize> {
-    let lo = cb.min[axis];
-    let scale = BINS as f64 / (cb.max[axis] - lo);
-    let bin = |t: u32| -> usize {
-        let b = ((centroids[t as usize][axis] - lo) * scale) as usize;
-        b.min(BINS - 1)
+/// The shape of a hierarchy over the records (its nodes with empty boxes, and the leaf order).
+/// The records are partitioned in place, so each level reads them contiguously; the
+/// bounds of the centroids of a node's children come from its split, never from another pass.
+fn shape(mut recs: Vec<Record>, strategy: BuildStrategy) -> (Vec<BvhNode>, Vec<u32>) {
+    let n = recs.len();
+    let mut ids = vec![0u8; n];
+    let blank = BvhNode {
+        bounds: Aabb::EMPTY,
+        start: 0,
+        count: 0,
     };
-    let mut counts = [0usize; BINS];
-    let mut bin_boxes = [Aabb::EMPTY; BINS];
-    for &t in order.iter() {
-        let b = bin(t);
-        counts[b] += 1;
-        bin_boxes[b] = bin_boxes[b].union(&boxes[t as usize]);
+    // At most 2n - 1 nodes (leaves of one); the unused room is given back at the end, so the
+    // array is never copied while it grows.
+    let mut nodes = Vec::with_capacity((2 * n).max(1));
+    nodes.push(blank);
+    let mut stack = vec![Task {
+        node: 0,
+        s: 0,
+        e: n,
+        cb: centroid_bounds(&recs),
+    }];
+    while let Some(Task { node, s, e, cb }) = stack.pop() {
+        let count = e - s;
+        if count <= MAX_LEAF {
+            nodes[node].start = s as u32;
+            nodes[node].count = count as u32;
+            continue;
+        }
+        let ext = [
+            cb.hi[0] - cb.lo[0],
+            cb.hi[1] - cb.lo[1],
+            cb.hi[2] - cb.lo[2],
+        ];
+        let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
+            0
+        } else if ext[1] >= ext[2] {
+            1
+        } else {
+            2
+        };
+        let mut split = None;
+        if strategy == BuildStrategy::Sah && ext[axis] > 0.0 {
+            split = if count <= SWEEP {
+                sweep_split(&mut recs[s..e], axis)
+            } else {
+                sah_split(&mut recs[s..e], &mut ids[s..e], &cb, axis)
+            };
+        }
+        let split = split.unwrap_or_else(|| median_split(&mut recs[s..e], axis));
+        let mid = s + split.mid;
+        let left = nodes.len();
+        nodes.push(blank);
+        nodes.push(blank);
+        nodes[node].start = left as u32;
+        stack.push(Task {
+            node: left + 1,
+            s: mid,
+            e,
+            cb: split.right,
+        });
+        stack.push(Task {
+            node: left,
+            s,
+            e: mid,
+            cb: split.left,
+        });
     }
+    nodes.shrink_to_fit();
+    (nodes, recs.iter().map(|r| r.t).collect())
+}
+
+#[inline(always)]
+fn mn32(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+#[inline(always)]
+fn mx32(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
+/// A box in `f32` (what the build's heuristics read).
+#[derive(Clone, Copy)]
+struct Box32 {
+    lo: [f32; 3],
+    hi: [f32; 3],
+}
+
+impl Box32 {
+    const EMPTY: Box32 = Box32 {
+        lo: [f32::INFINITY; 3],
+        hi: [f32::NEG_INFINITY; 3],
+    };
+
+    #[inline(always)]
+    fn union(&self, o: &Box32) -> Box32 {
+        Box32 {
+            lo: std::array::from_fn(|k| mn32(self.lo[k], o.lo[k])),
+            hi: std::array::from_fn(|k| mx32(self.hi[k], o.hi[k])),
+        }
+    }
+
+    #[inline(always)]
+    fn grow(&mut self, p: &[f32; 3]) {
+        *self = self.union(&Box32 { lo: *p, hi: *p });
+    }
+
+    /// Half the surface area, in `f64` (no overflow); 0 for the empty box.
+    fn half_area(&self) -> f64 {
+        let d: [f64; 3] = std::array::from_fn(|k| f64::from(self.hi[k]) - f64::from(self.lo[k]));
+        if d.iter().any(|x| x.is_nan() || *x < 0.0) {
+            return 0.0;
+        }
+        d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
+    }
+}
+
+/// A leaf of the build: its box rounded to `f32`, and its index.
+#[derive(Clone, Copy)]
+#[repr(C, align(32))]
+struct Record {
+    b: Box32,
+    t: u32,
+}
+
+impl Record {
+    fn new(b: &Aabb, t: u32) -> Record {
+        Record {
+            b: Box32 {
+                lo: b.min.map(|x| x as f32),
+                hi: b.max.map(|x| x as f32),
+            },
+            t,
+        }
+    }
+
+    #[inline(always)]
+    fn centroid(&self) -> [f32; 3] {
+        std::array::from_fn(|k| self.b.lo[k] * 0.5 + self.b.hi[k] * 0.5)
+    }
+}
+
+/// A node still to split: its records `s..e` and the bounds of their centroids.
+struct Task {
+    node: usize,
+    s: usize,
+    e: usize,
+    cb: Box32,
+}
+
+/// A split of a range of records at `mid` (relative to the range), with the bounds of the
+/// centroids of each side.
+struct Split {
+    mid: usize,
+    left: Box32,
+    right: Box32,
+}
+
+/// The box of the records' centroids.
+fn centroid_bounds(recs: &[Record]) -> Box32 {
+    let mut cb = Box32::EMPTY;
+    for r in recs {
+        cb.grow(&r.centroid());
+    }
+    cb
+}
+
+/// One bin of a SAH split: the union of its boxes, the box of their centroids, their number.
+#[derive(Clone, Copy)]
+struct Bin {
+    b: Box32,
+    c: Box32,
+    n: usize,
+}
+
+impl Bin {
+    const EMPTY: Bin = Bin {
+        b: Box32::EMPTY,
+        c: Box32::EMPTY,
+        n: 0,
+    };
+
+    #[inline(always)]
+    fn add(&mut self, b: &Box32, c: &[f32; 3]) {
+        self.n += 1;
+        self.b = self.b.union(b);
+        self.c.grow(c);
+    }
+
+    fn merge(&self, o: &Bin) -> Bin {
+        Bin {
+            b: self.b.union(&o.b),
+            c: self.c.union(&o.c),
+            n: self.n + o.n,
+        }
+    }
+}
+
+/// Split at the median centroid along `axis` (also the fallback of the SAH splits).
+fn median_split(recs: &mut [Record], axis: usize) -> Split {
+    let m = recs.len() / 2;
+    recs.select_nth_unstable_by(m, |a, b| a.centroid()[axis].total_cmp(&b.centroid()[axis]));
+    Split {
+        mid: m,
+        left: centroid_bounds(&recs[..m]),
+        right: centroid_bounds(&recs[m..]),
+    }
+}
+
+/// The bins of the records along `AXIS` (bin `k` holds the centroids in
+/// `lo + [k, k + 1) / scale`, the last bin also what lies above), each record's bin in `ids`.
+fn bin_records<const AXIS: usize>(
+    recs: &[Record],
+    ids: &mut [u8],
+    lo: f32,
+    scale: f32,
+) -> [Bin; BINS] {
+    let bin = |c: f32| -> usize {
+        // `as` saturates (NaN to 0); the clamp is on integers.
+        (((c - lo) * scale) as i32).clamp(0, BINS as i32 - 1) as usize
+    };
+    // Two sets of bins, for even and odd records: consecutive records often share a bin, and
+    // one set would chain every update on the previous one.
+    let mut even = [Bin::EMPTY; BINS];
+    let mut odd = [Bin::EMPTY; BINS];
+    let mut pairs = recs.chunks_exact(2);
+    let mut id_pairs = ids.chunks_exact_mut(2);
+    for (r, id) in (&mut pairs).zip(&mut id_pairs) {
+        let (c0, c1) = (r[0].centroid(), r[1].centroid());
+        let (k0, k1) = (bin(c0[AXIS]), bin(c1[AXIS]));
+        even[k0].add(&r[0].b, &c0);
+        odd[k1].add(&r[1].b, &c1);
+        (id[0], id[1]) = (k0 as u8, k1 as u8);
+    }
+    if let ([r], [id]) = (pairs.remainder(), id_pairs.into_remainder()) {
+        let c = r.centroid();
+        let k = bin(c[AXIS]);
+        even[k].add(&r.b, &c);
+        *id = k as u8;
+    }
+    std::array::from_fn(|k| even[k].merge(&odd[k]))
+}
+
+/// Binned SAH split of `recs` along `axis` (whose centroids lie in `cb`); `None` when no split
+/// is finite or a side would be empty (the caller then splits at the median). `ids` is work
+/// space as long as `recs` (each record's bin).
+fn sah_split(recs: &mut [Record], ids: &mut [u8], cb: &Box32, axis: usize) -> Option<Split> {
+    let lo = cb.lo[axis];
+    let scale = BINS as f32 / (cb.hi[axis] - lo);
+    let bins = match axis {
+        0 => bin_records::<0>(recs, ids, lo, scale),
+        1 => bin_records::<1>(recs, ids, lo, scale),
+        _ => bin_records::<2>(recs, ids, lo, scale),
+    };
     // Sweep from the right to get suffix areas and counts.
     let mut right_area = [0.0; BINS];
     let mut right_count = [0usize; BINS];
-    let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
+    let (mut acc, mut cnt) = (Box32::EMPTY, 0);
     for b in (1..BINS).rev() {
-        acc = acc.union(&bin_boxes[b]);
-        cnt += counts[b];
+        acc = acc.union(&bins[b].b);
+        cnt += bins[b].n;
         right_area[b] = acc.half_area();
         right_count[b] = cnt;
     }
     let (mut best, mut best_cost) = (0, f64::INFINITY);
-    let (mut acc, mut cnt) = (Aabb::EMPTY, 0);
+    let (mut acc, mut cnt) = (Box32::EMPTY, 0);
     for b in 0..BINS - 1 {
-        acc = acc.union(&bin_boxes[b]);
-        cnt += counts[b];
+        acc = acc.union(&bins[b].b);
+        cnt += bins[b].n;
         if cnt == 0 || right_count[b + 1] == 0 {
             continue;
         }
@@ -618,15 +825,66 @@ fn sah_split(
     if !best_cost.is_finite() {
         return None;
     }
-    // Partition: bins < best to the left.
-    let mut i = 0;
-    for k in 0..order.len() {
-        if bin(order[k]) < best {
-            order.swap(i, k);
-            i += 1;
+    let side = |bins: &[Bin]| bins.iter().fold(Bin::EMPTY, |acc, b| acc.merge(b));
+    let (left, right) = (side(&bins[..best]), side(&bins[best..]));
+    // Partition in place (branch-free): bins < best to the left. Each record is looked at
+    // once, at its original position `k` (what moves to `k` is already looked at).
+    let mut l = 0;
+    for (k, &id) in ids.iter().enumerate() {
+        recs.swap(l, k);
+        l += usize::from(usize::from(id) < best);
+    }
+    (left.n > 0 && right.n > 0).then_some(Split {
+        mid: left.n,
+        left: left.c,
+        right: right.c,
+    })
+}
+
+/// Full SAH split of a small range (at most [`SWEEP`] records): sorted by centroid along
+/// `axis`, every position between two records is a candidate (the binned splits among them).
+fn sweep_split(recs: &mut [Record], axis: usize) -> Option<Split> {
+    let n = recs.len();
+    // Sort (centroid, position) pairs, then the records by them (small moves, no comparator
+    // recomputing centroids).
+    let mut keys = [(0.0f32, 0u8); SWEEP];
+    for (k, r) in keys.iter_mut().zip(recs.iter()) {
+        *k = (r.centroid()[axis], 0);
+    }
+    for (i, k) in keys[..n].iter_mut().enumerate() {
+        k.1 = i as u8;
+    }
+    keys[..n].sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let mut sorted = [recs[0]; SWEEP];
+    for (d, k) in sorted.iter_mut().zip(&keys[..n]) {
+        *d = recs[usize::from(k.1)];
+    }
+    recs.copy_from_slice(&sorted[..n]);
+    // right[i]: the union of recs[i..]
+    let mut right = [0.0; SWEEP];
+    let mut acc = Box32::EMPTY;
+    for i in (1..n).rev() {
+        acc = acc.union(&recs[i].b);
+        right[i] = acc.half_area();
+    }
+    let (mut best, mut best_cost) = (0, f64::INFINITY);
+    let mut acc = Box32::EMPTY;
+    for i in 1..n {
+        acc = acc.union(&recs[i - 1].b);
+        let cost = acc.half_area() * i as f64 + right[i] * (n - i) as f64;
+        if cost < best_cost {
+            best_cost = cost;
+            best = i;
         }
     }
-    (i > 0 && i < order.len()).then_some(i)
+    if !best_cost.is_finite() {
+        return None;
+    }
+    Some(Split {
+        mid: best,
+        left: centroid_bounds(&recs[..best]),
+        right: centroid_bounds(&recs[best..]),
+    })
 }
 
 /// A lower bound on the squared distance between two boxes, in `f64`, never above the true
@@ -658,4 +916,117 @@ pub(crate) fn boxes_within(a: &Aabb, b: &Aabb, c: f64) -> bool {
     }
     let c2 = c * c;
     !c2.is_finite() || s * (1.0 - 1e-9) <= c2 * (1.0 + 1e-9) + 1e-300
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The invariants the queries rely on: `order` a permutation, every position in exactly
+    /// one leaf of 1 to `MAX_LEAF` boxes, children after their parent, the leaf boxes those of
+    /// `order`, and every node's box the exact union of what is below it.
+    fn check(bvh: &Bvh, boxes: &[Aabb]) {
+        let n = boxes.len();
+        let mut sorted = bvh.order().to_vec();
+        sorted.sort_unstable();
+        assert!(
+            sorted.iter().copied().eq(0..n as u32),
+            "order is a permutation"
+        );
+        for (b, &t) in bvh.boxes.iter().zip(bvh.order()) {
+            assert_eq!(*b, boxes[t as usize]);
+        }
+        let nodes = bvh.nodes();
+        if n == 0 {
+            assert_eq!(
+                nodes,
+                [BvhNode {
+                    bounds: Aabb::EMPTY,
+                    start: 0,
+                    count: 0
+                }]
+            );
+            return;
+        }
+        let mut covered = vec![0; n];
+        let mut reached = vec![0; nodes.len()];
+        let mut stack = vec![0usize];
+        while let Some(i) = stack.pop() {
+            reached[i] += 1;
+            let node = nodes[i];
+            let s = node.start as usize;
+            let below = if node.is_leaf() {
+                assert!(node.count as usize <= MAX_LEAF);
+                for c in &mut covered[s..s + node.count as usize] {
+                    *c += 1;
+                }
+                bvh.boxes[s..s + node.count as usize]
+                    .iter()
+                    .fold(Aabb::EMPTY, |a, b| a.union(b))
+            } else {
+                assert!(s > i && s + 1 < nodes.len());
+                stack.extend([s, s + 1]);
+                nodes[s].bounds.union(&nodes[s + 1].bounds)
+            };
+            assert_eq!(node.bounds, below, "node {i}");
+        }
+        assert!(reached.iter().all(|&r| r == 1));
+        assert!(covered.iter().all(|&c| c == 1));
+    }
+
+    fn lcg(x: &mut u64) -> f64 {
+        *x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*x >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    #[test]
+    fn builds_keep_their_invariants() {
+        let mesh = crate::shape::mesh::TriMesh::load(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/data/bunny.obj"
+        ))
+        .unwrap();
+        let (v, t) = (mesh.vertices(), mesh.triangles());
+        let tri_boxes: Vec<Aabb> = t.iter().map(|tri| triangle_box(v, tri)).collect();
+        for s in [BuildStrategy::Sah, BuildStrategy::Median] {
+            check(&Bvh::build_with(v, t, s), &tri_boxes);
+        }
+        let mut seed = 7u64;
+        let mut random = |scale: f64, n: usize| -> Vec<Aabb> {
+            (0..n)
+                .map(|_| {
+                    let p: [f64; 3] = std::array::from_fn(|_| (lcg(&mut seed) - 0.5) * scale);
+                    let d: [f64; 3] = std::array::from_fn(|_| lcg(&mut seed) * scale * 0.01);
+                    Aabb {
+                        min: p,
+                        max: std::array::from_fn(|k| p[k] + d[k]),
+                    }
+                })
+                .collect()
+        };
+        let unit = Aabb {
+            min: [0.0; 3],
+            max: [1.0; 3],
+        };
+        let cases = [
+            vec![],
+            vec![unit],
+            vec![unit; 100], // every centroid the same: median splits only
+            random(1.0, 1000),
+            random(1e300, 500), // beyond f32: the splits degrade, the boxes stay exact
+            random(1e-300, 500),
+            random(1.0, 37)
+                .into_iter()
+                .chain([unit; 40])
+                .chain(random(1e30, 40))
+                .collect(),
+        ];
+        for boxes in cases {
+            for s in [BuildStrategy::Sah, BuildStrategy::Median] {
+                check(&Bvh::from_boxes(boxes.clone(), s), &boxes);
+            }
+        }
+    }
 }

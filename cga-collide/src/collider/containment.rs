@@ -37,9 +37,10 @@ impl Collider {
         };
         match self.mode {
             Mode::Brute => {
+                let boxes32 = self.boxes32();
                 let (on, crossings) = (0..self.mesh.num_triangles())
                     .into_par_iter()
-                    .filter(|&i| on_ray(&widen(&self.boxes32[i])))
+                    .filter(|&i| on_ray(&widen(&boxes32[i])))
                     .map(|i| {
                         let (on, c) = visit(i as u32);
                         (on, usize::from(c))

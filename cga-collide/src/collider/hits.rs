@@ -23,7 +23,7 @@ impl Collider {
             Mode::Brute => {
                 let q = query_box32(query);
                 let chunks: Vec<Vec<u32>> = self
-                    .boxes32
+                    .boxes32()
                     .par_chunks(CHUNK)
                     .enumerate()
                     .map(|(c, boxes)| {
@@ -96,10 +96,11 @@ impl Collider {
                     .iter()
                     .map(|s| query_box32(&ball_box(s.centre(), s.radius())))
                     .collect();
+                let boxes32 = self.boxes32();
                 (0..self.mesh.num_triangles())
                     .into_par_iter()
                     .filter(|&i| {
-                        let b32 = &self.boxes32[i];
+                        let b32 = &boxes32[i];
                         spheres.iter().zip(&qs).any(|(s, q)| {
                             overlap32(b32, q)
                                 && widen(b32).may_meet_sphere(s.centre(), s.radius())

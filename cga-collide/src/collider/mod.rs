@@ -70,6 +70,8 @@ mod serial;
 pub use contacts::{Contact, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
 
+use std::sync::OnceLock;
+
 use nalgebra::{Isometry3, Point3};
 
 use crate::bounding::pose_tree::PoseTree;
@@ -91,16 +93,20 @@ pub enum Mode {
 }
 
 /// A mesh together with its box tree, the `f32` boxes of its triangles (what the brute-force
-/// scans read: 24 bytes a triangle, contiguous) and the layout of the queries under poses.
+/// scans read: 24 bytes a triangle, contiguous) and the layout of the queries under poses
+/// (laid out on the first query under poses).
 #[derive(Debug, Clone)]
 pub struct Collider {
     mesh: TriMesh,
     bvh: Bvh,
-    boxes32: Vec<[f32; 6]>,
+    /// The `f32` boxes of the triangles, built on first use: only the brute-force scans read
+    /// them.
+    boxes32: OnceLock<Vec<[f32; 6]>>,
     /// Largest `|coordinate|` of a vertex (the scale of the rounding bounds of pose queries).
     extent: f64,
-    /// The hierarchy laid out for pose queries (centre/extent nodes, vertices in leaf order).
-    pose_tree: PoseTree,
+    /// The hierarchy laid out for pose queries (centre/extent nodes, vertices in leaf order),
+    /// built on first use: only the queries under poses read it.
+    pose_tree: OnceLock<PoseTree>,
     mode: Mode,
 }
 
@@ -203,15 +209,13 @@ impl Collider {
     /// Builds the hierarchy with a chosen split strategy.
     pub fn with_strategy(mesh: TriMesh, strategy: BuildStrategy) -> Collider {
         let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
-        let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
-        let pose_tree = PoseTree::new(&bvh, |i| mesh.corners(i as u32), extent);
         Collider {
             mesh,
             bvh,
-            boxes32,
+            boxes32: OnceLock::new(),
             extent,
-            pose_tree,
+            pose_tree: OnceLock::new(),
             mode: Mode::default(),
         }
     }
@@ -223,17 +227,21 @@ impl Collider {
         let mesh = self.mesh.transformed(iso)?;
         let mut bvh = self.bvh.clone();
         bvh.refit(mesh.vertices(), mesh.triangles());
-        let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
-        let pose_tree = PoseTree::new(&bvh, |i| mesh.corners(i as u32), extent);
         Ok(Collider {
             mesh,
             bvh,
-            boxes32,
+            boxes32: OnceLock::new(),
             extent,
-            pose_tree,
+            pose_tree: OnceLock::new(),
             mode: self.mode,
         })
+    }
+
+    /// The `f32` boxes of the triangles, outward-rounded, in triangle order (what the
+    /// brute-force scans read), built on the first call.
+    pub(crate) fn boxes32(&self) -> &[[f32; 6]] {
+        self.boxes32.get_or_init(|| boxes32(&self.mesh))
     }
 
     /// Largest absolute coordinate of a vertex.
@@ -241,9 +249,10 @@ impl Collider {
         self.extent
     }
 
-    /// The hierarchy laid out for pose queries.
+    /// The hierarchy laid out for pose queries, built on the first call.
     pub(crate) fn pose_tree(&self) -> &PoseTree {
-        &self.pose_tree
+        self.pose_tree
+            .get_or_init(|| PoseTree::new(&self.bvh, |i| self.mesh.corners(i as u32), self.extent))
     }
 
     /// The mesh, in world coordinates.

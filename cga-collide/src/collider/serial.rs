@@ -8,10 +8,11 @@
 //! (a missed contact). Everything read is checked (sizes, indices, the tree's shape); bad bytes
 //! are an [`Error`], never a panic.
 
+use std::sync::OnceLock;
+
 use nalgebra::Point3;
 
-use super::{boxes32, extent, Collider, Mode};
-use crate::bounding::pose_tree::PoseTree;
+use super::{extent, Collider, Mode};
 use crate::bounding::{Bvh, BvhNode, MAX_LEAF};
 use crate::error::{Error, Location};
 use crate::shape::mesh::TriMesh;
@@ -121,15 +122,13 @@ impl Collider {
         let mesh = TriMesh::checked(NAME, vertices, triangles)?;
         check_shape(&nodes, &order)?;
         let bvh = Bvh::from_checked_shape(nodes, order, mesh.vertices(), mesh.triangles());
-        let boxes32 = boxes32(&mesh);
         let extent = extent(&mesh);
-        let pose_tree = PoseTree::new(&bvh, |i| mesh.corners(i as u32), extent);
         Ok(Collider {
             mesh,
             bvh,
-            boxes32,
+            boxes32: OnceLock::new(),
             extent,
-            pose_tree,
+            pose_tree: OnceLock::new(),
             mode,
         })
     }
