@@ -59,7 +59,7 @@ fn random_mixed() -> Vec<(Triangle, Triangle)> {
 /// shuffled): the mix the comparison with Möller's test is quoted on.
 fn random_in_cube() -> Vec<(Triangle, Triangle)> {
     let mut rng = SplitMix64(13);
-    let mut tri = |rng: &mut SplitMix64| {
+    let tri = |rng: &mut SplitMix64| {
         Triangle::new(rng.point(), rng.point(), rng.point()).expect("finite")
     };
     let (mut yes, mut no) = (Vec::new(), Vec::new());

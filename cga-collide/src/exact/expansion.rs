@@ -26,6 +26,12 @@ use ga_core::scalar::Ring;
 /// The most components an [`Expansion`] holds (values needing more are poisoned).
 pub const CAPACITY: usize = 16;
 
+/// `x < limit`, false for NaN (so a NaN never passes a range check).
+#[inline(always)]
+fn below(x: f64, limit: f64) -> bool {
+    x < limit
+}
+
 /// `2^27 + 1`: Dekker's splitter for 53-bit significands.
 const SPLITTER: f64 = 134_217_729.0;
 /// Products whose smallest components multiply below this could lose their lowest bits to
@@ -444,7 +450,7 @@ impl Expansion {
                 return Self::POISON;
             }
         }
-        if n > 0 && !(h[n - 1].abs() < HUGE) {
+        if n > 0 && !below(h[n - 1].abs(), HUGE) {
             return Self::POISON;
         }
         let mut c = [0.0; CAPACITY];
@@ -464,7 +470,7 @@ impl Expansion {
         if n > 8 {
             n = compress(&mut self.c[..n]);
         }
-        if n > 0 && !(self.c[n - 1].abs() < HUGE) {
+        if n > 0 && !below(self.c[n - 1].abs(), HUGE) {
             return Self::POISON;
         }
         // A single zero component is zero.
@@ -508,7 +514,7 @@ impl Expansion {
         // Exactness of the split products: nothing may underflow or overflow.
         let small = e[0].abs() * f[0].abs();
         let large = e[e.len() - 1].abs() * f[f.len() - 1].abs();
-        if !(small > TINY) || !(large < HUGE) {
+        if !below(TINY, small) || !below(large, HUGE) {
             return Self::POISON;
         }
         let (long, short) = if e.len() >= f.len() { (e, f) } else { (f, e) };
