@@ -7,9 +7,10 @@
 //! Each node also has an oriented box fitted to its vertices ([`OrientedBoxes`]), fitted on the
 //! first distance search and read only by the distance searches.
 //!
-//! Built once with the collider (about 30 bytes a triangle for the nodes, 72 for the vertices,
-//! and 64 for the oriented boxes once fitted); the pose queries of the pose queries (`collider/poses.rs`, crate-private; its docs are in the source) read nothing else
-//! of the mesh.
+//! Built once per collider, on its first pose or distance query (about 30 bytes a triangle for
+//! the nodes, 72 for the vertices, and 64 for the oriented boxes once fitted), so colliders that
+//! never ask such questions never pay for it; the pose queries (`collider/poses.rs`,
+//! crate-private; its docs are in the source) read nothing else of the mesh.
 //!
 //! # Conservativeness
 //! A node's real box `[c - e, c + e]` (per coordinate) contains the exact box `[min, max]` of
