@@ -24,7 +24,7 @@ use crate::collider::{Collider, Mode};
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 use crate::parallel::*;
-use crate::query::intersects::{extremes, segment_meets_triangle_with_sides};
+use crate::query::intersects::{extremes, segment_meets_triangle_with_sides, triangles_meet};
 use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
@@ -157,13 +157,13 @@ pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
     let mut shared = [&p[0]; 3];
     let mut n = 0;
     for (k, x) in p.iter().enumerate() {
-        if !p[..k].contains(x) && q.contains(x) {
+        if q.contains(x) && !p[..k].contains(x) {
             shared[n] = x;
             n += 1;
         }
     }
     match n {
-        0 => triangle(&p[0], &p[1], &p[2]).intersects(&triangle(&q[0], &q[1], &q[2])),
+        0 => triangles_meet(p, q),
         1 => meet_beyond_vertex(p, q, shared[0]),
         2 => meet_beyond_edge(p, q, shared[0], shared[1]),
         _ => !degenerate(p),

@@ -691,6 +691,26 @@ mod tests {
                 let want = exact_sign::<crate::exact::predicates::Orient3d, 12>(&x);
                 assert_eq!(direct, want, "{x:?}");
             }
+            // The normal components are orientations of projections.
+            let corners: [f64; 9] = core::array::from_fn(|i| x[i]);
+            for (direct, want) in [
+                (
+                    crate::exact::predicates::NormalX::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalX, 9>(&corners),
+                ),
+                (
+                    crate::exact::predicates::NormalY::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalY, 9>(&corners),
+                ),
+                (
+                    crate::exact::predicates::NormalZ::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalZ, 9>(&corners),
+                ),
+            ] {
+                if let Some(direct) = direct {
+                    assert_eq!(direct, want, "{corners:?}");
+                }
+            }
             let y: [f64; 6] = [x[0], x[1], x[3], x[4], x[9], x[10]];
             if let Some(direct) = orient2d_sign(&y) {
                 let want = exact_sign::<crate::exact::predicates::Orient2d, 6>(&y);

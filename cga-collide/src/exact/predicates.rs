@@ -118,6 +118,20 @@ macro_rules! normal_component {
                 let [n0, n1, n2] = cross(&u, &v);
                 [n0, n1, n2][$i].clone()
             }
+            /// Component `i` of the normal is `orient2d` of the corners projected on the two
+            /// other axes, taken in cyclic order (`j = i + 1`, `k = i + 2`).
+            #[inline]
+            fn exact_sign_direct(x: &[f64; 9]) -> Option<core::cmp::Ordering> {
+                let (j, k) = (($i + 1) % 3, ($i + 2) % 3);
+                crate::exact::expansion::orient2d_sign(&[
+                    x[j],
+                    x[k],
+                    x[3 + j],
+                    x[3 + k],
+                    x[6 + j],
+                    x[6 + k],
+                ])
+            }
         }
     };
 }

@@ -209,6 +209,13 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
     seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, pl)
 }
 
+/// Exact: do the closed triangles `p` and `q` (raw corners, finite) share a point? What
+/// `Triangle::intersects` decides, without building the shapes.
+#[inline]
+pub(crate) fn triangles_meet(p: &[P3; 3], q: &[P3; 3]) -> bool {
+    tri_tri::<ExactKernel>(p, q)
+}
+
 /// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t`, whose plane
 /// is `pl` and against which `a` and `b` have the sides `sides` (computed once by the caller)?
 pub(crate) fn segment_meets_triangle_with_sides(
