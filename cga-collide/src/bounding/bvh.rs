@@ -432,7 +432,7 @@ impl Bvh {
         other: &Bvh,
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
-        self.descend_pairs(other, false, Aabb::overlaps, visit)
+        self.for_each_pair_where(other, Aabb::overlaps, visit)
     }
 
     /// [`for_each_pair`](Self::for_each_pair) with `near` in place of box overlap: every pair of
@@ -443,14 +443,19 @@ impl Bvh {
         &self,
         other: &Bvh,
         near: impl Fn(&Aabb, &Aabb) -> bool,
-        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+        mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
-        self.descend_pairs(other, false, near, visit)
+        self.descend_pairs(other, false, near, |ka, kb| {
+            visit(self.order[ka as usize], other.order[kb as usize])
+        })
     }
 
-    /// Calls `visit(i, j)` once for every unordered pair of distinct triangles of this one mesh
-    /// whose boxes overlap; stops early when `visit` breaks.
-    pub(crate) fn for_each_self_pair<B>(
+    /// Calls `visit(a, b)` once for every unordered pair of distinct triangles of this one mesh
+    /// whose boxes overlap, by *slots*: `a` and `b` are positions in [`order`](Self::order)
+    /// (the triangles are `order[a]` and `order[b]`), where triangles close in the tree are
+    /// close in memory, so callers keeping per-triangle data in slot order read it with good
+    /// locality. Stops early when `visit` breaks.
+    pub(crate) fn for_each_self_pair_slot<B>(
         &self,
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
@@ -460,8 +465,9 @@ impl Bvh {
         self.descend_pairs(self, true, Aabb::overlaps, visit)
     }
 
-    /// The simultaneous descent behind the pair enumerations. With `same_tree` (`other` is
-    /// `self`), a node paired with itself yields its own pairs once, and its children's.
+    /// The simultaneous descent behind the pair enumerations, yielding slots (positions in
+    /// `order`). With `same_tree` (`other` is `self`), a node paired with itself yields its own
+    /// pairs once, and its children's.
     fn descend_pairs<B>(
         &self,
         other: &Bvh,
@@ -480,7 +486,7 @@ impl Bvh {
                     for ka in s..e {
                         for kb in ka + 1..e {
                             if self.boxes[ka].overlaps(&self.boxes[kb]) {
-                                visit(self.order[ka], self.order[kb])?;
+                                visit(ka as u32, kb as u32)?;
                             }
                         }
                     }
@@ -504,7 +510,7 @@ impl Bvh {
                         }
                         for kb in sb..sb + b.count as usize {
                             if near(ba, &other.boxes[kb]) {
-                                visit(self.order[ka], other.order[kb])?;
+                                visit(ka as u32, kb as u32)?;
                             }
                         }
                     }

@@ -85,10 +85,10 @@ fn opposite<'a>(t: &'a [P3; 3], v: &'a P3) -> [&'a P3; 2] {
 }
 
 /// Whether triangles sharing exactly the vertex `v` meet anywhere else.
-fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
-    // Each plane once, and the far corners' sides against it once: most neighbours around a
-    // vertex of a surface are told apart by these two or four signs, and the rest reuse them.
-    let (plane_p, plane_q) = (ExactPlane::new(p), ExactPlane::new(q));
+fn meet_beyond_vertex(plane_p: &ExactPlane, plane_q: &ExactPlane, v: &P3) -> bool {
+    // The far corners' sides against the other plane once: most neighbours around a vertex of
+    // a surface are told apart by these two or four signs, and the rest reuse them.
+    let (p, q) = (plane_p.corners(), plane_q.corners());
     let (far_p, far_q) = (opposite(p, v), opposite(q, v));
     let sides_p = [plane_q.side(far_p[0]), plane_q.side(far_p[1])];
     if strictly_one_side(sides_p) {
@@ -102,8 +102,8 @@ fn meet_beyond_vertex(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
         return meet_beyond_vertex_degenerate(p, q, v);
     }
     // Non-degenerate: the far edge of one meets the other (see the module docs).
-    segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, &plane_q)
-        || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, &plane_p)
+    segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, plane_q)
+        || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, plane_p)
 }
 
 /// Two signs, nonzero and equal.
@@ -122,10 +122,10 @@ fn meet_beyond_vertex_degenerate(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
 }
 
 /// Whether triangles sharing exactly the edge `uv` meet anywhere else.
-fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
+fn meet_beyond_edge(plane_p: &ExactPlane, plane_q: &ExactPlane, u: &P3, v: &P3) -> bool {
+    let (p, q) = (plane_p.corners(), plane_q.corners());
     let third = |t: &[P3; 3]| *t.iter().find(|x| *x != u && *x != v).unwrap_or(u);
     let (a, b) = (third(p), third(q));
-    let plane_p = ExactPlane::new(p);
     if !plane_p.is_degenerate() {
         // `b` off the plane of `p`: `q` is not degenerate (`b` is off the line `uv`) and meets
         // that plane only in `[u, v]`. One sign decides most edges of a surface.
@@ -134,12 +134,12 @@ fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
         }
         // Coplanar: they overlap when the third vertices lie on the same side of `uv`; a
         // degenerate `q` (on the line `uv`) meets `p` only in `[u, v]`.
-        return !degenerate(q)
+        return !plane_q.is_degenerate()
             && ExactKernel::sign::<EdgeSide, 12>(&[
                 u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
             ]) == Greater;
     }
-    if !degenerate(q) {
+    if !plane_q.is_degenerate() {
         // A degenerate `p` (on the line `uv`) meets `q` only in `[u, v]`.
         return false;
     }
@@ -149,9 +149,10 @@ fn meet_beyond_edge(p: &[P3; 3], q: &[P3; 3], u: &P3, v: &P3) -> bool {
     (a[k] > hi && b[k] > hi) || (a[k] < lo && b[k] < lo)
 }
 
-/// Whether two triangles of one mesh meet anywhere other than in what they share (see the
-/// module docs), exactly.
-pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
+/// Whether two triangles of one mesh, given by their planes, meet anywhere other than in what
+/// they share (see the module docs), exactly.
+pub(crate) fn meet_elsewhere(plane_p: &ExactPlane, plane_q: &ExactPlane) -> bool {
+    let (p, q) = (plane_p.corners(), plane_q.corners());
     // The distinct positions of `p` that `q` has too (no allocation: this runs for every
     // candidate pair).
     let mut shared = [&p[0]; 3];
@@ -163,10 +164,54 @@ pub(crate) fn meet_elsewhere(p: &[P3; 3], q: &[P3; 3]) -> bool {
         }
     }
     match n {
-        0 => triangles_meet(p, q),
-        1 => meet_beyond_vertex(p, q, shared[0]),
-        2 => meet_beyond_edge(p, q, shared[0], shared[1]),
-        _ => !degenerate(p),
+        0 => triangles_meet(plane_p, plane_q),
+        1 => meet_beyond_vertex(plane_p, plane_q, shared[0]),
+        2 => meet_beyond_edge(plane_p, plane_q, shared[0], shared[1]),
+        _ => !plane_p.is_degenerate(),
+    }
+}
+
+/// Meshes up to this many triangles keep every triangle's plane for the whole search (128
+/// bytes each: at most 128 MiB); larger ones make the two planes of each candidate pair anew.
+const PLANE_CACHE_MAX: usize = 1 << 20;
+
+/// The planes of the triangles of a collider by tree slot (position in the tree's order, so
+/// that the pairs of one subtree read nearby memory), kept or made on demand.
+enum Planes<'a> {
+    Kept(Vec<ExactPlane>),
+    OnDemand(&'a Collider),
+}
+
+impl<'a> Planes<'a> {
+    fn of(collider: &'a Collider) -> Self {
+        let order = collider.bvh().order();
+        if order.len() > PLANE_CACHE_MAX {
+            return Planes::OnDemand(collider);
+        }
+        // Made once per triangle instead of once per candidate pair (each triangle has about
+        // ten neighbours whose boxes overlap its own).
+        Planes::Kept(
+            order
+                .par_iter()
+                .map(|&i| ExactPlane::new(&collider.corners(i)))
+                .collect(),
+        )
+    }
+
+    #[inline(always)]
+    fn get(&self, slot: u32) -> ExactPlane {
+        match self {
+            Planes::Kept(planes) => planes[slot as usize],
+            Planes::OnDemand(collider) => {
+                ExactPlane::new(&collider.corners(collider.bvh().order()[slot as usize]))
+            }
+        }
+    }
+
+    /// [`meet_elsewhere`] for the triangles in two slots.
+    #[inline(always)]
+    fn meet_elsewhere(&self, a: u32, b: u32) -> bool {
+        meet_elsewhere(&self.get(a), &self.get(b))
     }
 }
 
@@ -195,11 +240,13 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return self.self_intersections_brute();
         }
+        let planes = Planes::of(self);
         if crate::parallel::threads() == 1 {
             // One thread: decide each pair as the tree yields it (no candidate buffer).
-            let mut out = Vec::new();
-            let _ = self.bvh().for_each_self_pair::<()>(|i, j| {
-                if meet_elsewhere(&self.corners(i), &self.corners(j)) {
+            let (mut out, order) = (Vec::new(), self.bvh().order());
+            let _ = self.bvh().for_each_self_pair_slot::<()>(|a, b| {
+                if planes.meet_elsewhere(a, b) {
+                    let (i, j) = (order[a as usize], order[b as usize]);
                     out.push((i.min(j), i.max(j)));
                 }
                 ControlFlow::Continue(())
@@ -208,14 +255,18 @@ impl Collider {
             return out;
         }
         let mut candidates = Vec::new();
-        let _ = self.bvh().for_each_self_pair::<()>(|i, j| {
-            candidates.push((i.min(j), i.max(j)));
+        let _ = self.bvh().for_each_self_pair_slot::<()>(|a, b| {
+            candidates.push((a, b));
             ControlFlow::Continue(())
         });
+        let order = self.bvh().order();
         let mut out: Vec<(u32, u32)> = candidates
             .par_iter()
-            .copied()
-            .filter(|&(i, j)| meet_elsewhere(&self.corners(i), &self.corners(j)))
+            .filter(|&&(a, b)| planes.meet_elsewhere(a, b))
+            .map(|&(a, b)| {
+                let (i, j) = (order[a as usize], order[b as usize]);
+                (i.min(j), i.max(j))
+            })
             .collect();
         out.sort_unstable();
         out
@@ -227,9 +278,11 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return !self.self_intersections_brute().is_empty();
         }
+        // Stops early: planes made per candidate pair, not for the whole mesh up front.
+        let planes = Planes::OnDemand(self);
         self.bvh()
-            .for_each_self_pair(|i, j| {
-                if meet_elsewhere(&self.corners(i), &self.corners(j)) {
+            .for_each_self_pair_slot(|a, b| {
+                if planes.meet_elsewhere(a, b) {
                     ControlFlow::Break(())
                 } else {
                     ControlFlow::Continue(())
@@ -244,9 +297,10 @@ impl Collider {
         let mut out: Vec<(u32, u32)> = (0..n)
             .into_par_iter()
             .flat_map_iter(|i| {
-                let ti = self.corners(i);
-                (i + 1..n)
-                    .filter_map(move |j| meet_elsewhere(&ti, &self.corners(j)).then_some((i, j)))
+                let pi = ExactPlane::new(&self.corners(i));
+                (i + 1..n).filter_map(move |j| {
+                    meet_elsewhere(&pi, &ExactPlane::new(&self.corners(j))).then_some((i, j))
+                })
             })
             .collect();
         out.sort_unstable();

@@ -197,6 +197,12 @@ impl ExactPlane {
         ExactPlane { p: *p, n, m, k }
     }
 
+    /// The triangle this plane was made of.
+    #[inline(always)]
+    pub fn corners(&self) -> &[[f64; 3]; 3] {
+        &self.p
+    }
+
     /// The side of `q` when the `f64` filter alone certifies it (`None` when only the exact
     /// evaluation could tell): for callers that only need certain answers and have a cheaper
     /// plan B than exact arithmetic.

@@ -209,11 +209,11 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
     seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, pl)
 }
 
-/// Exact: do the closed triangles `p` and `q` (raw corners, finite) share a point? What
-/// `Triangle::intersects` decides, without building the shapes.
+/// Exact: do the closed triangles of the planes `p` and `q` share a point? What
+/// `Triangle::intersects` decides, from planes made once per triangle.
 #[inline]
-pub(crate) fn triangles_meet(p: &[P3; 3], q: &[P3; 3]) -> bool {
-    tri_tri::<ExactKernel>(p, q)
+pub(crate) fn triangles_meet(p: &ExactPlane, q: &ExactPlane) -> bool {
+    tri_tri_planes::<ExactKernel>(p.corners(), q.corners(), p, || *q)
 }
 
 /// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t`, whose plane
@@ -307,11 +307,22 @@ fn alone(s: &[Ordering; 3]) -> usize {
 }
 
 fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
+    let pl1 = K::plane(p);
+    tri_tri_planes::<K>(p, q, &pl1, || K::plane(q))
+}
+
+/// [`tri_tri`] with the plane of `p` given and that of `q` made on demand (callers that keep
+/// the planes of a whole mesh pass them in).
+fn tri_tri_planes<K: Kernel>(
+    p: &[P3; 3],
+    q: &[P3; 3],
+    pl1: &K::Plane,
+    plane_q: impl FnOnce() -> K::Plane,
+) -> bool {
     // Each plane (normal and filter data) is computed once; its degeneracy is checked only when
     // no side came out nonzero: a certified nonzero side proves the triangle non-degenerate (a
     // collinear triangle has exact side 0 everywhere), so in general position the filter costs
     // the six plane evaluations and nothing more.
-    let pl1 = K::plane(p);
     let dq = pl1.sides_of(q);
     // (A degenerate first triangle gives exact zeros here, so this exit is sound before the
     // degeneracy check.)
@@ -325,16 +336,16 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         }
         // `q` lies in the plane of the non-degenerate `p`: coplanar, whatever `q`'s own
         // plane says (no need to classify `p` against it).
-        return coplanar_tri_tri::<K>(p, q, &pl1);
+        return coplanar_tri_tri::<K>(p, q, pl1);
     }
-    let pl2 = K::plane(q);
-    let dp = pl2.sides(&pl1);
+    let pl2 = plane_q();
+    let dp = pl2.sides(pl1);
     if strictly_one_side(&dp) {
         return false;
     }
     if all_zero(&dp) && pl2.is_degenerate() {
         let (e0, e1) = extremes(q);
-        return seg_tri_plane::<K>(&e0, &e1, p, &pl1);
+        return seg_tri_plane::<K>(&e0, &e1, p, pl1);
     }
     if all_zero(&dp) {
         // `p` in the plane of the non-degenerate `q` (`dq` not all zero: not reached for exact
@@ -363,7 +374,7 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
     if let Some(meet) = plane_contact::<K>(p, &dp, q, &pl2) {
         return meet;
     }
-    if let Some(meet) = plane_contact::<K>(q, &dq, p, &pl1) {
+    if let Some(meet) = plane_contact::<K>(q, &dq, p, pl1) {
         return meet;
     }
     // Otherwise an edge of one meets the other (thesis IV.4), with the known sides reused.
@@ -372,7 +383,7 @@ fn tri_tri<K: Kernel>(p: &[P3; 3], q: &[P3; 3]) -> bool {
         seg_tri_sides::<K>(&p[i], &p[j], dp[i], dp[j], q, &pl2)
     }) || (0..3).any(|i| {
         let j = (i + 1) % 3;
-        seg_tri_sides::<K>(&q[i], &q[j], dq[i], dq[j], p, &pl1)
+        seg_tri_sides::<K>(&q[i], &q[j], dq[i], dq[j], p, pl1)
     })
 }
 
