@@ -190,28 +190,27 @@ impl<'a> Planes<'a> {
         }
         // Made once per triangle instead of once per candidate pair (each triangle has about
         // ten neighbours whose boxes overlap its own).
-        Planes::Kept(
-            order
-                .par_iter()
-                .map(|&i| ExactPlane::new(&collider.corners(i)))
-                .collect(),
-        )
-    }
-
-    #[inline(always)]
-    fn get(&self, slot: u32) -> ExactPlane {
-        match self {
-            Planes::Kept(planes) => planes[slot as usize],
-            Planes::OnDemand(collider) => {
-                ExactPlane::new(&collider.corners(collider.bvh().order()[slot as usize]))
-            }
-        }
+        let plane = |&i: &u32| ExactPlane::new(&collider.corners(i));
+        Planes::Kept(if crate::parallel::threads() == 1 || order.len() < 4096 {
+            // Cheaper than the parallel machinery where it cannot pay off.
+            order.iter().map(plane).collect()
+        } else {
+            order.par_iter().map(plane).collect()
+        })
     }
 
     /// [`meet_elsewhere`] for the triangles in two slots.
     #[inline(always)]
     fn meet_elsewhere(&self, a: u32, b: u32) -> bool {
-        meet_elsewhere(&self.get(a), &self.get(b))
+        match self {
+            Planes::Kept(planes) => meet_elsewhere(&planes[a as usize], &planes[b as usize]),
+            Planes::OnDemand(collider) => {
+                let plane = |slot: u32| {
+                    ExactPlane::new(&collider.corners(collider.bvh().order()[slot as usize]))
+                };
+                meet_elsewhere(&plane(a), &plane(b))
+            }
+        }
     }
 }
 
