@@ -1,9 +1,12 @@
 //! The exact tests against Möller / Euclidean references in general position, and against the
 //! independent exact oracle on adversarial input.
 
-use cga_collide::exact::predicates::{Orient3d, SphereSphere};
+use cga_collide::exact::predicates::{
+    BallBall, EdgeSide, LineDistance, LineLineReach, NormalY, Orient2d, Orient3d, PlaneDistance,
+    SphereSphere,
+};
 use cga_collide::exact::{
-    exact_sign, rational_exact_sign, ErrF64, ExactKernel, FloatKernel, Kernel, Predicate,
+    exact_sign, rational_exact_sign, ErrF64, ExactKernel, Expansion, FloatKernel, Kernel, Predicate,
 };
 use cga_collide::nalgebra::Point3;
 use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs};
@@ -127,6 +130,46 @@ proptest! {
         prop_assert_eq!(exact_sign::<Orient3d, 12>(&v), rational_exact_sign::<Orient3d, 12>(&v));
         let w: [f64; 8] = core::array::from_fn(|i| (x[i] as f64).abs() * scale);
         prop_assert_eq!(ExactKernel::sign::<SphereSphere, 8>(&w), rational_exact_sign::<SphereSphere, 8>(&w));
+    }
+
+    /// The allocation-free exact stage (floating-point expansions, and the hand-written
+    /// orientations) agrees with big integers wherever it answers, on exact zeros and near
+    /// misses of many predicates (degrees 2 to 6) at every scale; and the full staged decision
+    /// equals the big-integer sign everywhere.
+    #[test]
+    fn expansions_agree_with_big_integers(
+        x in proptest::array::uniform16(-6i32..6),
+        k in 0usize..16,
+        ulps in -2i64..3,
+        fraction in prop::sample::select(vec![0.0, 0.1, 1.0 / 3.0, 0.7]),
+        scale in prop::sample::select(vec![1e-150, 1e-40, 1.0, 7.3, 3.0e40, 1e150]),
+    ) {
+        // A coarse grid (many exact zeros: coplanar, collinear, tangent), one coordinate off by
+        // an inexact fraction and a few ulps (near misses, inexact differences).
+        let mut v: [f64; 16] = core::array::from_fn(|i| x[i] as f64 * scale);
+        v[k] = f64::from_bits(((v[k] + fraction * scale).to_bits() as i64 + ulps) as u64);
+        fn check<P: Predicate<N>, const N: usize>(v: &[f64; 16]) -> Result<(), TestCaseError> {
+            let x: [f64; N] = core::array::from_fn(|i| v[i]);
+            let want = exact_sign::<P, N>(&x);
+            let e: [Expansion; N] = core::array::from_fn(|i| Expansion::from_f64(x[i]));
+            if let Some(got) = P::eval(&e).sign() {
+                prop_assert_eq!(got, want, "expansion, {:?}", x);
+            }
+            if let Some(got) = P::exact_sign_direct(&x) {
+                prop_assert_eq!(got, want, "hand-written, {:?}", x);
+            }
+            prop_assert_eq!(ExactKernel::sign::<P, N>(&x), want, "staged, {:?}", x);
+            Ok(())
+        }
+        check::<Orient3d, 12>(&v)?;
+        check::<Orient2d, 6>(&v)?;
+        check::<NormalY, 9>(&v)?;
+        check::<EdgeSide, 12>(&v)?;
+        check::<SphereSphere, 8>(&v)?;
+        check::<BallBall, 8>(&v)?;
+        check::<LineDistance, 10>(&v)?;
+        check::<PlaneDistance, 13>(&v)?;
+        check::<LineLineReach, 13>(&v)?;
     }
 }
 
