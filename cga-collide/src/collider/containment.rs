@@ -53,7 +53,7 @@ impl Collider {
             Mode::Bvh => {
                 let mut crossings = 0usize;
                 let on = self
-                    .bvh
+                    .bvh()
                     .for_each_candidate(on_ray, |i| {
                         let (on, c) = visit(i);
                         if on {

@@ -43,7 +43,7 @@ impl Collider {
             }
             Mode::Bvh => {
                 let mut out = Vec::new();
-                let _ = self.bvh.for_each_candidate::<()>(&test, |t| {
+                let _ = self.bvh().for_each_candidate::<()>(&test, |t| {
                     if hit(&self.triangle(t)) {
                         out.push(t);
                     }

@@ -98,7 +98,11 @@ pub enum Mode {
 #[derive(Debug, Clone)]
 pub struct Collider {
     mesh: TriMesh,
-    bvh: Bvh,
+    /// The box tree: built with the collider, except for meshes under [`EAGER_TREE_MIN`]
+    /// triangles, which build it on first use (their queries are cheaper than the build).
+    bvh: OnceLock<Bvh>,
+    /// How the tree is (or will be) built.
+    strategy: BuildStrategy,
     /// The `f32` boxes of the triangles, built on first use: only the brute-force scans read
     /// them.
     boxes32: OnceLock<Vec<[f32; 6]>>,
@@ -109,6 +113,10 @@ pub struct Collider {
     pose_tree: OnceLock<PoseTree>,
     mode: Mode,
 }
+
+/// Meshes with at least this many triangles build their tree with the collider; smaller ones
+/// on the first query that reads it (self-intersection of a tiny mesh never does).
+pub(crate) const EAGER_TREE_MIN: usize = 32;
 
 /// Largest absolute vertex coordinate.
 pub(super) fn extent(mesh: &TriMesh) -> f64 {
@@ -201,18 +209,23 @@ pub(super) fn widen(b: &[f32; 6]) -> Aabb {
 }
 
 impl Collider {
-    /// Builds the hierarchy (binned SAH) over a mesh, taken as already in world coordinates.
+    /// Builds the hierarchy (binned SAH) over a mesh, taken as already in world coordinates
+    /// (a mesh of fewer than 32 triangles builds it on the first query that reads it).
     pub fn new(mesh: TriMesh) -> Collider {
         Self::with_strategy(mesh, BuildStrategy::Sah)
     }
 
     /// Builds the hierarchy with a chosen split strategy.
     pub fn with_strategy(mesh: TriMesh, strategy: BuildStrategy) -> Collider {
-        let bvh = Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy);
+        let bvh = OnceLock::new();
+        if mesh.num_triangles() >= EAGER_TREE_MIN {
+            let _ = bvh.set(Bvh::build_with(mesh.vertices(), mesh.triangles(), strategy));
+        }
         let extent = extent(&mesh);
         Collider {
             mesh,
             bvh,
+            strategy,
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
@@ -225,12 +238,13 @@ impl Collider {
     /// them (exact boxes, so still conservative). Fails only if a coordinate overflows.
     pub fn placed(&self, iso: &Isometry3<f64>) -> Result<Collider, Error> {
         let mesh = self.mesh.transformed(iso)?;
-        let mut bvh = self.bvh.clone();
+        let mut bvh = self.bvh().clone();
         bvh.refit(mesh.vertices(), mesh.triangles());
         let extent = extent(&mesh);
         Ok(Collider {
             mesh,
-            bvh,
+            bvh: OnceLock::from(bvh),
+            strategy: self.strategy,
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
@@ -252,7 +266,7 @@ impl Collider {
     /// The hierarchy laid out for pose queries, built on the first call.
     pub(crate) fn pose_tree(&self) -> &PoseTree {
         self.pose_tree
-            .get_or_init(|| PoseTree::new(&self.bvh, |i| self.mesh.corners(i as u32), self.extent))
+            .get_or_init(|| PoseTree::new(self.bvh(), |i| self.mesh.corners(i as u32), self.extent))
     }
 
     /// The mesh, in world coordinates.
@@ -260,9 +274,16 @@ impl Collider {
         &self.mesh
     }
 
-    /// The hierarchy.
+    /// The hierarchy (built here on the first call for meshes of fewer than 32 triangles).
     pub fn bvh(&self) -> &Bvh {
-        &self.bvh
+        self.bvh.get_or_init(|| {
+            Bvh::build_with(self.mesh.vertices(), self.mesh.triangles(), self.strategy)
+        })
+    }
+
+    /// Whether the hierarchy has been built (tiny meshes build it on first use).
+    pub(crate) fn has_bvh(&self) -> bool {
+        self.bvh.get().is_some()
     }
 
     /// How this collider's queries are run ([`Mode`]).

@@ -20,6 +20,7 @@
 use core::cmp::Ordering::{Equal, Greater};
 use std::ops::ControlFlow;
 
+use crate::bounding::Aabb;
 use crate::collider::{Collider, Mode};
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
@@ -171,6 +172,21 @@ pub(crate) fn meet_elsewhere(plane_p: &ExactPlane, plane_q: &ExactPlane) -> bool
     }
 }
 
+/// The exact box of three corners.
+fn corner_box(t: &[P3; 3]) -> Aabb {
+    let mut b = Aabb {
+        min: t[0],
+        max: t[0],
+    };
+    for p in &t[1..] {
+        for k in 0..3 {
+            b.min[k] = b.min[k].min(p[k]);
+            b.max[k] = b.max[k].max(p[k]);
+        }
+    }
+    b
+}
+
 /// Meshes up to this many triangles keep every triangle's plane for the whole search (128
 /// bytes each: at most 128 MiB); larger ones make the two planes of each candidate pair anew.
 const PLANE_CACHE_MAX: usize = 1 << 20;
@@ -239,6 +255,9 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return self.self_intersections_brute();
         }
+        if !self.has_bvh() {
+            return self.self_intersections_small();
+        }
         let planes = Planes::of(self);
         if crate::parallel::threads() == 1 {
             // One thread: decide each pair as the tree yields it (no candidate buffer).
@@ -277,6 +296,9 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return !self.self_intersections_brute().is_empty();
         }
+        if !self.has_bvh() {
+            return !self.self_intersections_small().is_empty();
+        }
         // Stops early: planes made per candidate pair, not for the whole mesh up front.
         let planes = Planes::OnDemand(self);
         self.bvh()
@@ -288,6 +310,26 @@ impl Collider {
                 }
             })
             .is_break()
+    }
+
+    /// A tiny mesh whose tree was never built (fewer than 32 triangles): every pair, after an
+    /// exact comparison of their boxes (the pairs the tree would have enumerated), in order.
+    fn self_intersections_small(&self) -> Vec<(u32, u32)> {
+        let n = self.mesh().num_triangles() as u32;
+        if n < 2 {
+            return Vec::new();
+        }
+        let planes: Vec<ExactPlane> = (0..n).map(|i| ExactPlane::new(&self.corners(i))).collect();
+        let boxes: Vec<Aabb> = planes.iter().map(|p| corner_box(p.corners())).collect();
+        let mut out = Vec::new();
+        for i in 0..n as usize {
+            for j in i + 1..n as usize {
+                if boxes[i].overlaps(&boxes[j]) && meet_elsewhere(&planes[i], &planes[j]) {
+                    out.push((i as u32, j as u32));
+                }
+            }
+        }
+        out
     }
 
     /// Every pair tested, in parallel, with no tree and no box filter.

@@ -13,6 +13,7 @@ use std::sync::OnceLock;
 use nalgebra::Point3;
 
 use super::{extent, Collider, Mode};
+use crate::bounding::BuildStrategy;
 use crate::bounding::{Bvh, BvhNode, MAX_LEAF};
 use crate::error::{Error, Location};
 use crate::shape::mesh::TriMesh;
@@ -36,7 +37,7 @@ impl Collider {
     /// ```
     pub fn to_bytes(&self) -> Vec<u8> {
         let (v, t) = (self.mesh.vertices(), self.mesh.triangles());
-        let nodes = self.bvh.nodes();
+        let nodes = self.bvh().nodes();
         let mut out =
             Vec::with_capacity(33 + 24 * v.len() + 12 * t.len() + 8 * nodes.len() + 4 * t.len());
         out.extend_from_slice(MAGIC);
@@ -61,7 +62,7 @@ impl Collider {
             out.extend_from_slice(&n.start.to_le_bytes());
             out.extend_from_slice(&n.count.to_le_bytes());
         }
-        for &i in self.bvh.order() {
+        for &i in self.bvh().order() {
             out.extend_from_slice(&i.to_le_bytes());
         }
         out
@@ -125,7 +126,8 @@ impl Collider {
         let extent = extent(&mesh);
         Ok(Collider {
             mesh,
-            bvh,
+            bvh: OnceLock::from(bvh),
+            strategy: BuildStrategy::default(),
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
