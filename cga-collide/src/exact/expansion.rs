@@ -309,6 +309,11 @@ fn minor22(a: &[f64; 2], d: &[f64; 2], b: &[f64; 2], c: &[f64; 2], out: &mut [f6
 /// otherwise from two-component differences. `None` only for inputs beyond `2^±200`.
 #[inline]
 pub(crate) fn orient2d_sign(x: &[f64; 6]) -> Option<Ordering> {
+    // An exact zero from zero differences (equal coordinates: points on an axis-parallel line),
+    // decided by comparisons alone.
+    if (x[2] == x[0] || x[5] == x[1]) && (x[3] == x[1] || x[4] == x[0]) {
+        return Some(Ordering::Equal);
+    }
     if let Some([ux, uy, vx, vy]) =
         exact_differences([(x[2], x[0]), (x[3], x[1]), (x[4], x[0]), (x[5], x[1])])
     {

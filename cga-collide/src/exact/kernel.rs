@@ -178,6 +178,21 @@ pub struct ExactPlane {
     k: f64,
 }
 
+/// The components of the normal `(p1 - p0) × (p2 - p0)` that are exactly zero because each of
+/// their two products has an exactly zero factor (a zero coordinate difference: equal
+/// coordinates). Comparisons only; a cheap certificate of exact zeros on the axis-aligned
+/// faces and edges of engineering meshes.
+#[inline]
+fn normal_zero(p: &[[f64; 3]; 3]) -> [bool; 3] {
+    let (u, v) = (sub(&p[1], &p[0]), sub(&p[2], &p[0]));
+    let zero = |x: f64, y: f64| x == 0.0 || y == 0.0;
+    [
+        zero(u[1], v[2]) && zero(u[2], v[1]),
+        zero(u[2], v[0]) && zero(u[0], v[2]),
+        zero(u[0], v[1]) && zero(u[1], v[0]),
+    ]
+}
+
 /// Bounds at or above this mean the permanent may have overflowed: no certificate.
 const BOUND_MAX: f64 = ORIENT_BOUND * PERM_MAX;
 
@@ -241,13 +256,7 @@ impl ExactPlane {
         // zero factor (`q_k = p0_k`, or a normal component made of zero differences). The
         // common case on axis-aligned faces of engineering meshes.
         let [a, b, c] = self.p;
-        let (u, v) = (sub(&b, &a), sub(&c, &a));
-        let zero = |x: f64, y: f64| x == 0.0 || y == 0.0;
-        let normal_zero = [
-            zero(u[1], v[2]) && zero(u[2], v[1]),
-            zero(u[2], v[0]) && zero(u[0], v[2]),
-            zero(u[0], v[1]) && zero(u[1], v[0]),
-        ];
+        let normal_zero = normal_zero(&self.p);
         if (0..3).all(|k| normal_zero[k] || q[k] == a[k]) {
             return Ordering::Equal;
         }
@@ -303,6 +312,11 @@ impl ExactPlane {
     #[inline(never)]
     fn exact_degenerate(&self) -> bool {
         let [a, b, c] = self.p;
+        if normal_zero(&self.p) == [true; 3] {
+            // Every normal component is made of zero differences: repeated corners, or corners
+            // on an axis-parallel line.
+            return true;
+        }
         let x = [a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]];
         ExactKernel::sign::<crate::exact::predicates::NormalX, 9>(&x) == Ordering::Equal
             && ExactKernel::sign::<crate::exact::predicates::NormalY, 9>(&x) == Ordering::Equal
