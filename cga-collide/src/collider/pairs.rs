@@ -29,7 +29,7 @@ impl Collider {
             }
             Mode::Bvh => {
                 let mut out = Vec::new();
-                let _ = self.bvh().for_each_pair::<()>(&other.bvh(), |i, j| {
+                let _ = self.bvh().for_each_pair::<()>(other.bvh(), |i, j| {
                     if self.triangle(i).intersects(&other.triangle(j)) {
                         out.push((i, j));
                     }
@@ -57,7 +57,7 @@ impl Collider {
             }
             Mode::Bvh => self
                 .bvh()
-                .for_each_pair(&other.bvh(), |i, j| {
+                .for_each_pair(other.bvh(), |i, j| {
                     if self.triangle(i).intersects(&other.triangle(j)) {
                         ControlFlow::Break(())
                     } else {
@@ -89,7 +89,7 @@ impl Collider {
     #[cfg(any(test, feature = "testing"))]
     pub fn box_pairs_bvh(&self, other: &Collider) -> Vec<(u32, u32)> {
         let mut out = Vec::new();
-        let _ = self.bvh().for_each_pair::<()>(&other.bvh(), |i, j| {
+        let _ = self.bvh().for_each_pair::<()>(other.bvh(), |i, j| {
             out.push((i, j));
             ControlFlow::Continue(())
         });

@@ -179,9 +179,9 @@ fn corner_box(t: &[P3; 3]) -> Aabb {
         max: t[0],
     };
     for p in &t[1..] {
-        for k in 0..3 {
-            b.min[k] = b.min[k].min(p[k]);
-            b.max[k] = b.max[k].max(p[k]);
+        for (k, &x) in p.iter().enumerate() {
+            b.min[k] = b.min[k].min(x);
+            b.max[k] = b.max[k].max(x);
         }
     }
     b
