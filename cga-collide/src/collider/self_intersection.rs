@@ -25,58 +25,51 @@ use crate::collider::{Collider, Mode};
 use crate::exact::predicates::EdgeSide;
 use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 use crate::parallel::*;
-use crate::query::intersects::{extremes, segment_meets_triangle_with_sides, triangles_meet};
-use crate::query::Intersects;
-use crate::shape::{Segment, Triangle};
+use crate::query::intersects::{
+    extremes, segment_meets_triangle, segment_meets_triangle_with_sides, segments_meet,
+    triangles_meet,
+};
 
 type P3 = [f64; 3];
 
-fn triangle(p: &P3, q: &P3, r: &P3) -> Triangle {
-    Triangle::new((*p).into(), (*q).into(), (*r).into())
-        .unwrap_or_else(|_| unreachable!("finite mesh coordinates"))
+/// A part of a triangle around a shared vertex `v`, with its far set (where every ray from `v`
+/// into the part leaves it): the triangle itself and its edge opposite `v`, or, for a
+/// degenerate triangle, a segment from `v` to an extreme point and that point. Segments and
+/// points stay segments: the exact tests are fast on them, while a degenerate triangle's plane
+/// would send every side test to exact arithmetic.
+#[derive(Clone, Copy)]
+enum Piece {
+    Tri([P3; 3], [P3; 2]),
+    Seg([P3; 2], P3),
 }
 
-fn degenerate(t: &[P3; 3]) -> bool {
-    ExactKernel::plane(t).is_degenerate()
-}
-
-/// A part of a triangle around a shared vertex: the triangle itself or a segment.
-enum Part {
-    Tri(Triangle),
-    Seg(Segment),
-}
-
-impl Part {
-    fn met_by(&self, s: &Segment) -> bool {
+impl Piece {
+    /// The far set, as a segment (a point is a segment of length zero).
+    fn far(&self) -> (P3, P3) {
         match self {
-            Part::Tri(t) => s.intersects(t),
-            Part::Seg(x) => s.intersects(x),
+            Piece::Tri(_, [x, y]) => (*x, *y),
+            Piece::Seg(_, e) => (*e, *e),
+        }
+    }
+
+    /// Whether the closed segment `ab` meets this part.
+    fn met_by(&self, (a, b): (P3, P3)) -> bool {
+        match self {
+            Piece::Tri(t, _) => segment_meets_triangle(&a, &b, t),
+            Piece::Seg([c, d], _) => segments_meet(&a, &b, c, d),
         }
     }
 }
 
-fn segment(p: &P3, q: &P3) -> Segment {
-    Segment::new((*p).into(), (*q).into()).unwrap_or_else(|_| unreachable!("finite coordinates"))
-}
-
-/// The parts of triangle `t` around its vertex `v`, each with its far set (where every ray
-/// from `v` into the part leaves it: the opposite edge, or the far end point of a degenerate
-/// triangle's segment). Segments and points are kept as segments: the exact tests are fast on
-/// them, while a degenerate triangle's plane would send every side test to exact arithmetic.
-fn pieces(t: &[P3; 3], v: &P3) -> Vec<(Part, Segment)> {
-    if !degenerate(t) {
-        let others: Vec<&P3> = t.iter().filter(|p| *p != v).collect();
-        return vec![(
-            Part::Tri(triangle(&t[0], &t[1], &t[2])),
-            segment(others[0], others[1]),
-        )];
+/// The parts of triangle `t` (degenerate or not, as given) around its vertex `v`: one for a
+/// triangle, one or two segments for a degenerate one.
+fn pieces(t: &[P3; 3], v: &P3, degenerate: bool) -> [Option<Piece>; 2] {
+    if !degenerate {
+        let [x, y] = opposite(t, v);
+        return [Some(Piece::Tri(*t, [*x, *y])), None];
     }
     let (p, q) = extremes(t);
-    [p, q]
-        .iter()
-        .filter(|e| *e != v)
-        .map(|e| (Part::Seg(segment(v, e)), segment(e, e)))
-        .collect()
+    [p, q].map(|e| (e != *v).then_some(Piece::Seg([*v, e], e)))
 }
 
 /// The corners of `t` other than `v` (`v` again where `t` repeats it).
@@ -99,8 +92,12 @@ fn meet_beyond_vertex(plane_p: &ExactPlane, plane_q: &ExactPlane, v: &P3) -> boo
     if strictly_one_side(sides_q) {
         return false;
     }
-    if plane_p.is_degenerate() || plane_q.is_degenerate() {
-        return meet_beyond_vertex_degenerate(p, q, v);
+    let (degenerate_p, degenerate_q) = (plane_p.is_degenerate(), plane_q.is_degenerate());
+    if degenerate_p || degenerate_q {
+        return meet_beyond_vertex_degenerate(
+            &pieces(p, v, degenerate_p),
+            &pieces(q, v, degenerate_q),
+        );
     }
     // Non-degenerate: the far edge of one meets the other (see the module docs).
     segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, plane_q)
@@ -114,11 +111,11 @@ fn strictly_one_side(s: [core::cmp::Ordering; 2]) -> bool {
 }
 
 /// [`meet_beyond_vertex`] when a triangle is degenerate: its parts around `v` (segments).
-fn meet_beyond_vertex_degenerate(p: &[P3; 3], q: &[P3; 3], v: &P3) -> bool {
-    let (pp, pq) = (pieces(p, v), pieces(q, v));
-    pp.iter().any(|(part_p, far_p)| {
+fn meet_beyond_vertex_degenerate(pp: &[Option<Piece>; 2], pq: &[Option<Piece>; 2]) -> bool {
+    pp.iter().flatten().any(|part_p| {
         pq.iter()
-            .any(|(part_q, far_q)| part_q.met_by(far_p) || part_p.met_by(far_q))
+            .flatten()
+            .any(|part_q| part_q.met_by(part_p.far()) || part_p.met_by(part_q.far()))
     })
 }
 

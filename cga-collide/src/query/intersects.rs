@@ -189,8 +189,27 @@ fn tri2_tri2<K: Kernel>(t: &[P2; 3], u: &[P2; 3]) -> bool {
 // ---------------------------------------------------------------- 3D
 
 fn seg_seg<K: Kernel>(a: &P3, b: &P3, c: &P3, d: &P3) -> bool {
+    if a == b && c != d {
+        // A point against a segment: the segment carries the line.
+        return seg_seg::<K>(c, d, a, b);
+    }
     if orient3d::<K>(a, b, c, d) != Equal {
         return false;
+    }
+    if a != b {
+        // Coplanar. A known plane through them gives the one projection that is one-to-one on
+        // it; four points on the line `ab` reduce to intervals along an axis where `a` and `b`
+        // differ (the line is not perpendicular to it). Otherwise all three projections.
+        let (abc, abd) = (K::plane(&[*a, *b, *c]), K::plane(&[*a, *b, *d]));
+        if let Some(k) = abc.projection_axis().or_else(|| abd.projection_axis()) {
+            return seg2_seg2::<K>(&proj(a, k), &proj(b, k), &proj(c, k), &proj(d, k));
+        }
+        if abc.is_degenerate() && abd.is_degenerate() {
+            let k = (0..3).find(|&k| a[k] != b[k]).unwrap_or(0);
+            let (lo1, hi1) = (a[k].min(b[k]), a[k].max(b[k]));
+            let (lo2, hi2) = (c[k].min(d[k]), c[k].max(d[k]));
+            return lo1 <= hi2 && lo2 <= hi1;
+        }
     }
     (0..3).all(|k| seg2_seg2::<K>(&proj(a, k), &proj(b, k), &proj(c, k), &proj(d, k)))
 }
@@ -214,6 +233,19 @@ fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool 
 #[inline]
 pub(crate) fn triangles_meet(p: &ExactPlane, q: &ExactPlane) -> bool {
     tri_tri_planes::<ExactKernel>(p.corners(), q.corners(), p, || *q)
+}
+
+/// Exact: does the closed segment `ab` meet the closed triangle `t` (raw corners, finite; either
+/// may be degenerate)?
+#[inline]
+pub(crate) fn segment_meets_triangle(a: &P3, b: &P3, t: &[P3; 3]) -> bool {
+    seg_tri::<ExactKernel>(a, b, t)
+}
+
+/// Exact: do the closed segments `ab` and `cd` (raw corners, finite) share a point?
+#[inline]
+pub(crate) fn segments_meet(a: &P3, b: &P3, c: &P3, d: &P3) -> bool {
+    seg_seg::<ExactKernel>(a, b, c, d)
 }
 
 /// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t`, whose plane
