@@ -87,6 +87,11 @@ fn orient3d<K: Kernel>(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
 
 #[inline]
 fn orient2d<K: Kernel>(a: &P2, b: &P2, c: &P2) -> Ordering {
+    // Coplanar tests meet many exact zeros from equal coordinates (points on axis-parallel
+    // lines): both products have a zero factor, decided by comparisons before any filter.
+    if (b[0] == a[0] || c[1] == a[1]) && (b[1] == a[1] || c[0] == a[0]) {
+        return Equal;
+    }
     K::sign::<Orient2d, 6>(&[a[0], a[1], b[0], b[1], c[0], c[1]])
 }
 
