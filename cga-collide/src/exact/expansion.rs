@@ -455,18 +455,9 @@ impl Expansion {
                 return Self::POISON;
             }
         }
-        if n > 0 && !below(h[n - 1].abs(), HUGE) {
-            return Self::POISON;
-        }
-        let mut c = [0.0; CAPACITY];
-        c[..n].copy_from_slice(&h[..n]);
-        // A single zero component is zero.
-        let len = if n == 1 && h[0] == 0.0 { 0 } else { n };
-        Expansion {
-            len: len as u8,
-            poisoned: false,
-            c,
-        }
+        let mut out = Self::EMPTY;
+        out.c[..n].copy_from_slice(&h[..n]);
+        out.finish(n)
     }
 
     /// A value whose first `n` components were written into `self.c`.
