@@ -92,17 +92,21 @@ static void write_pairs(const std::string& path, const Pairs& pairs) {
   if (!out) throw std::runtime_error("error writing " + path);
 }
 
-// Best and mean of `repeat` runs of f, in milliseconds (steady clock).
+// Best and mean of `repeat` runs of f, in milliseconds (steady clock); runs go on past `repeat`
+// until they add up to 20 ms (at most 100,000), so that the best time of a mesh taking a few
+// microseconds is not the luck of a few cold runs (the Rust driver uses the same rule).
 template <class F> static std::pair<double, double> timed(int repeat, F f) {
   double best = 1e300, sum = 0.0;
-  for (int r = 0; r < repeat; ++r) {
+  int runs = 0;
+  while (runs < repeat || (sum < 20.0 && runs < 100000)) {
     auto t0 = std::chrono::steady_clock::now();
     f();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     best = std::min(best, ms);
     sum += ms;
+    ++runs;
   }
-  return {best, sum / repeat};
+  return {best, sum / runs};
 }
 
 static std::array<Point, 3> corners(const Mesh& m, Face f) {

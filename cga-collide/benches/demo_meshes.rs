@@ -7,13 +7,14 @@
 //! cargo bench -p cga-collide --bench demo_meshes -- pair MESH_A MESH_B REPEAT OUT_FILE
 //! ```
 //!
-//! `self`: for every mesh path in `LIST_FILE` (one a line), the best and mean of `REPEAT` runs of
+//! `self`: for every mesh path in `LIST_FILE` (one a line), the best and mean of `REPEAT` runs (more
+//! until they add up to 20 ms, as in the CGAL driver) of
 //! `Collider::new` + `Collider::self_intersections` (the tree build included, as CGAL's time
 //! includes its boxes; the best build alone is `build_ms`), the pairs written to
 //! `OUT_DIR/<file name>.pairs` (`i j` a line, `i < j`, sorted), and one JSON line per mesh on
 //! standard output. A mesh that cannot be read gives `{"mesh": ..., "error": ...}`.
 //!
-//! `pair`: the best and mean of `REPEAT` runs of `Collider::new` on both meshes and
+//! `pair`: the best and mean of `REPEAT` runs (or more, as above) of `Collider::new` on both meshes and
 //! `Collider::intersecting_pairs` (every pair of a triangle of A and one of B whose closed
 //! triangles meet), the pairs written to `OUT_FILE`, one JSON line.
 //!
@@ -106,6 +107,18 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
+/// Runs go on past `REPEAT` until they add up to this many milliseconds, so that the best time
+/// of a mesh taking a few microseconds is not the luck of five cold runs (the CGAL driver uses
+/// the same rule).
+const MIN_TOTAL_MS: f64 = 20.0;
+/// At most this many runs per item.
+const MAX_RUNS: usize = 100_000;
+
+/// Whether another timed run is due after `done` runs taking `sum_ms` in all.
+fn more_runs(done: usize, repeat: usize, sum_ms: f64) -> bool {
+    done < repeat || (sum_ms < MIN_TOTAL_MS && done < MAX_RUNS)
+}
+
 /// One mesh's self-intersection: the JSON line (or an error line).
 fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
     let name = file_name(path);
@@ -116,8 +129,9 @@ fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
     let triangles = mesh.num_triangles();
     let triangulated = declared_faces(path).is_some_and(|n| n != triangles);
     let (mut best, mut sum, mut best_build) = (f64::INFINITY, 0.0, f64::INFINITY);
-    let mut pairs = Vec::new();
-    for _ in 0..repeat {
+    let (mut pairs, mut runs) = (Vec::new(), 0);
+    while more_runs(runs, repeat, sum) {
+        runs += 1;
         let copy = mesh.clone();
         cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
@@ -138,7 +152,8 @@ fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
         "triangulated": triangulated,
         "pairs": pairs.len(),
         "best_ms": best,
-        "mean_ms": sum / repeat as f64,
+        "mean_ms": sum / runs as f64,
+        "runs": runs,
         "build_ms": best_build,
         "counters": counters_json(),
     })
@@ -170,8 +185,9 @@ fn pair_mode(a: &str, b: &str, repeat: usize, out_file: &str) -> Res<()> {
         }
     };
     let (mut best, mut sum, mut best_build) = (f64::INFINITY, 0.0, f64::INFINITY);
-    let mut pairs = Vec::new();
-    for _ in 0..repeat {
+    let (mut pairs, mut runs) = (Vec::new(), 0);
+    while more_runs(runs, repeat, sum) {
+        runs += 1;
         let (ca, cb) = (ma.clone(), mb.clone());
         cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
@@ -191,7 +207,8 @@ fn pair_mode(a: &str, b: &str, repeat: usize, out_file: &str) -> Res<()> {
         "triangles_b": mb.num_triangles(),
         "pairs": pairs.len(),
         "best_ms": best,
-        "mean_ms": sum / repeat as f64,
+        "mean_ms": sum / runs as f64,
+        "runs": runs,
         "build_ms": best_build,
         "counters": counters_json(),
     });

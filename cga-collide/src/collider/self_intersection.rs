@@ -17,20 +17,94 @@
 //!   `v` when both extend past the same end;
 //! * all three positions shared (a duplicated triangle): reported unless degenerate.
 
-use core::cmp::Ordering::{Equal, Greater};
+use core::cmp::Ordering::Equal;
 use std::ops::ControlFlow;
 
 use crate::bounding::Aabb;
 use crate::collider::{Collider, Mode};
-use crate::exact::predicates::EdgeSide;
-use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
+use crate::exact::{ExactPlane, PlaneSide};
 use crate::parallel::*;
 use crate::query::intersects::{
-    extremes, segment_meets_triangle, segment_meets_triangle_with_sides, segments_meet,
-    triangles_meet,
+    coplanar_triangles_meet, extremes, same_side_in_plane, segment_meets_triangle_plane,
+    segment_meets_triangle_with_sides, segments_meet, triangles_meet,
 };
 
 type P3 = [f64; 3];
+
+/// A triangle of the mesh as the pair tests see it: its plane, whether it is degenerate, and
+/// the axis-parallel plane it lies in (if any), decided once per triangle instead of once per
+/// pair. A degenerate triangle's plane gives exact zeros for every point, so the tests skip its
+/// sides and treat it as the segment it is; its corners are stored with that segment's end
+/// points first.
+#[derive(Clone, Copy)]
+pub(crate) struct Face {
+    plane: ExactPlane,
+    degenerate: bool,
+    /// `k` when every corner has the same coordinate `k` (the largest such `k`), else `NOT_FLAT`.
+    flat: u8,
+}
+
+/// [`Face::flat`] of a triangle in no axis-parallel plane.
+const NOT_FLAT: u8 = 3;
+
+impl Face {
+    /// The face of the triangle `t`.
+    #[inline]
+    pub(crate) fn new(t: &[P3; 3]) -> Self {
+        let mut plane = ExactPlane::new(t);
+        let degenerate = plane.is_degenerate();
+        if degenerate {
+            // The same three positions, the extreme ones first (a cold path: rare faces).
+            let (a, b) = extremes(t);
+            let ia = t.iter().position(|x| *x == a).unwrap_or(0);
+            let ib = t.iter().position(|x| *x == b && *x != a).unwrap_or(ia);
+            let other = if ia == ib { ia } else { 3 - ia - ib };
+            plane = ExactPlane::new(&[a, b, t[other]]);
+        }
+        let flat = (0..3)
+            .rev()
+            .find(|&k| t[1][k] == t[0][k] && t[2][k] == t[0][k])
+            .map_or(NOT_FLAT, |k| k as u8);
+        Face {
+            plane,
+            degenerate,
+            flat,
+        }
+    }
+
+    #[inline(always)]
+    fn corners(&self) -> &[P3; 3] {
+        self.plane.corners()
+    }
+
+    /// The segment between the two extreme corners of a degenerate face.
+    #[inline(always)]
+    fn segment(&self) -> (P3, P3) {
+        let c = self.corners();
+        (c[0], c[1])
+    }
+
+    /// Whether the closed segment `ab` meets this face.
+    #[inline]
+    fn met_by_segment(&self, a: &P3, b: &P3) -> bool {
+        if self.degenerate {
+            let (c, d) = self.segment();
+            segments_meet(a, b, &c, &d)
+        } else {
+            segment_meets_triangle_plane(a, b, self.corners(), &self.plane)
+        }
+    }
+}
+
+/// The axis `k` when both faces lie in one plane `x_k = c`: every side of a corner of one
+/// against the other's plane is then an exact zero, known without arithmetic (the flat parts
+/// of engineering meshes).
+#[inline]
+fn common_flat_axis(fp: &Face, fq: &Face) -> Option<usize> {
+    let k = fp.flat as usize;
+    (fp.flat != NOT_FLAT && fq.flat == fp.flat && fp.corners()[0][k] == fq.corners()[0][k])
+        .then_some(k)
+}
 
 /// A part of a triangle around a shared vertex `v`, with its far set (where every ray from `v`
 /// into the part leaves it): the triangle itself and its edge opposite `v`, or, for a
@@ -38,12 +112,12 @@ type P3 = [f64; 3];
 /// points stay segments: the exact tests are fast on them, while a degenerate triangle's plane
 /// would send every side test to exact arithmetic.
 #[derive(Clone, Copy)]
-enum Piece {
-    Tri([P3; 3], [P3; 2]),
+enum Piece<'a> {
+    Tri(&'a Face, [P3; 2]),
     Seg([P3; 2], P3),
 }
 
-impl Piece {
+impl Piece<'_> {
     /// The far set, as a segment (a point is a segment of length zero).
     fn far(&self) -> (P3, P3) {
         match self {
@@ -55,7 +129,7 @@ impl Piece {
     /// Whether the closed segment `ab` meets this part.
     fn met_by(&self, (a, b): (P3, P3)) -> bool {
         match self {
-            Piece::Tri(t, _) => segment_meets_triangle(&a, &b, t),
+            Piece::Tri(f, _) => segment_meets_triangle_plane(&a, &b, f.corners(), &f.plane),
             Piece::Seg([c, d], _) => segments_meet(&a, &b, c, d),
         }
     }
@@ -63,12 +137,12 @@ impl Piece {
 
 /// The parts of triangle `t` (degenerate or not, as given) around its vertex `v`: one for a
 /// triangle, one or two segments for a degenerate one.
-fn pieces(t: &[P3; 3], v: &P3, degenerate: bool) -> [Option<Piece>; 2] {
-    if !degenerate {
-        let [x, y] = opposite(t, v);
-        return [Some(Piece::Tri(*t, [*x, *y])), None];
+fn pieces<'a>(f: &'a Face, v: &P3) -> [Option<Piece<'a>>; 2] {
+    if !f.degenerate {
+        let [x, y] = opposite(f.corners(), v);
+        return [Some(Piece::Tri(f, [*x, *y])), None];
     }
-    let (p, q) = extremes(t);
+    let (p, q) = f.segment();
     [p, q].map(|e| (e != *v).then_some(Piece::Seg([*v, e], e)))
 }
 
@@ -79,29 +153,33 @@ fn opposite<'a>(t: &'a [P3; 3], v: &'a P3) -> [&'a P3; 2] {
 }
 
 /// Whether triangles sharing exactly the vertex `v` meet anywhere else.
-fn meet_beyond_vertex(plane_p: &ExactPlane, plane_q: &ExactPlane, v: &P3) -> bool {
+fn meet_beyond_vertex(fp: &Face, fq: &Face, v: &P3) -> bool {
     // The far corners' sides against the other plane once: most neighbours around a vertex of
-    // a surface are told apart by these two or four signs, and the rest reuse them.
-    let (p, q) = (plane_p.corners(), plane_q.corners());
+    // a surface are told apart by these two or four signs, and the rest reuse them. Sides
+    // against a degenerate face's plane are all zero: not computed.
+    let (p, q) = (fp.corners(), fq.corners());
     let (far_p, far_q) = (opposite(p, v), opposite(q, v));
-    let sides_p = [plane_q.side(far_p[0]), plane_q.side(far_p[1])];
-    if strictly_one_side(sides_p) {
-        return false;
+    let coplanar = common_flat_axis(fp, fq).is_some();
+    let mut sides_p = [Equal; 2];
+    if !fq.degenerate && !coplanar {
+        sides_p = [fq.plane.side(far_p[0]), fq.plane.side(far_p[1])];
+        if strictly_one_side(sides_p) {
+            return false;
+        }
     }
-    let sides_q = [plane_p.side(far_q[0]), plane_p.side(far_q[1])];
-    if strictly_one_side(sides_q) {
-        return false;
+    let mut sides_q = [Equal; 2];
+    if !fp.degenerate && !coplanar {
+        sides_q = [fp.plane.side(far_q[0]), fp.plane.side(far_q[1])];
+        if strictly_one_side(sides_q) {
+            return false;
+        }
     }
-    let (degenerate_p, degenerate_q) = (plane_p.is_degenerate(), plane_q.is_degenerate());
-    if degenerate_p || degenerate_q {
-        return meet_beyond_vertex_degenerate(
-            &pieces(p, v, degenerate_p),
-            &pieces(q, v, degenerate_q),
-        );
+    if fp.degenerate || fq.degenerate {
+        return meet_beyond_vertex_degenerate(&pieces(fp, v), &pieces(fq, v));
     }
     // Non-degenerate: the far edge of one meets the other (see the module docs).
-    segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, plane_q)
-        || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, plane_p)
+    segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, &fq.plane)
+        || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, &fp.plane)
 }
 
 /// Two signs, nonzero and equal.
@@ -120,24 +198,21 @@ fn meet_beyond_vertex_degenerate(pp: &[Option<Piece>; 2], pq: &[Option<Piece>; 2
 }
 
 /// Whether triangles sharing exactly the edge `uv` meet anywhere else.
-fn meet_beyond_edge(plane_p: &ExactPlane, plane_q: &ExactPlane, u: &P3, v: &P3) -> bool {
-    let (p, q) = (plane_p.corners(), plane_q.corners());
+fn meet_beyond_edge(fp: &Face, fq: &Face, u: &P3, v: &P3) -> bool {
+    let (p, q) = (fp.corners(), fq.corners());
     let third = |t: &[P3; 3]| *t.iter().find(|x| *x != u && *x != v).unwrap_or(u);
     let (a, b) = (third(p), third(q));
-    if !plane_p.is_degenerate() {
+    if !fp.degenerate {
         // `b` off the plane of `p`: `q` is not degenerate (`b` is off the line `uv`) and meets
         // that plane only in `[u, v]`. One sign decides most edges of a surface.
-        if plane_p.side(&b) != Equal {
+        if common_flat_axis(fp, fq).is_none() && fp.plane.side(&b) != Equal {
             return false;
         }
         // Coplanar: they overlap when the third vertices lie on the same side of `uv`; a
         // degenerate `q` (on the line `uv`) meets `p` only in `[u, v]`.
-        return !plane_q.is_degenerate()
-            && ExactKernel::sign::<EdgeSide, 12>(&[
-                u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
-            ]) == Greater;
+        return !fq.degenerate && same_side_in_plane(&fp.plane, u, v, &a, &b);
     }
-    if !plane_q.is_degenerate() {
+    if !fq.degenerate {
         // A degenerate `p` (on the line `uv`) meets `q` only in `[u, v]`.
         return false;
     }
@@ -147,10 +222,29 @@ fn meet_beyond_edge(plane_p: &ExactPlane, plane_q: &ExactPlane, u: &P3, v: &P3) 
     (a[k] > hi && b[k] > hi) || (a[k] < lo && b[k] < lo)
 }
 
-/// Whether two triangles of one mesh, given by their planes, meet anywhere other than in what
-/// they share (see the module docs), exactly.
-pub(crate) fn meet_elsewhere(plane_p: &ExactPlane, plane_q: &ExactPlane) -> bool {
-    let (p, q) = (plane_p.corners(), plane_q.corners());
+/// Whether triangles sharing nothing meet: the exact triangle test, or segment tests where a
+/// face is degenerate (no sides against its plane).
+fn meet_apart(fp: &Face, fq: &Face) -> bool {
+    if let Some(k) = common_flat_axis(fp, fq) {
+        return coplanar_triangles_meet(fp.corners(), fq.corners(), k);
+    }
+    match (fp.degenerate, fq.degenerate) {
+        (false, false) => triangles_meet(&fp.plane, &fq.plane),
+        (true, _) => {
+            let (a, b) = fp.segment();
+            fq.met_by_segment(&a, &b)
+        }
+        (false, true) => {
+            let (a, b) = fq.segment();
+            fp.met_by_segment(&a, &b)
+        }
+    }
+}
+
+/// Whether two triangles of one mesh meet anywhere other than in what they share (see the
+/// module docs), exactly.
+pub(crate) fn meet_elsewhere(fp: &Face, fq: &Face) -> bool {
+    let (p, q) = (fp.corners(), fq.corners());
     // The distinct positions of `p` that `q` has too (no allocation: this runs for every
     // candidate pair).
     let mut shared = [&p[0]; 3];
@@ -162,10 +256,10 @@ pub(crate) fn meet_elsewhere(plane_p: &ExactPlane, plane_q: &ExactPlane) -> bool
         }
     }
     match n {
-        0 => triangles_meet(plane_p, plane_q),
-        1 => meet_beyond_vertex(plane_p, plane_q, shared[0]),
-        2 => meet_beyond_edge(plane_p, plane_q, shared[0], shared[1]),
-        _ => !plane_p.is_degenerate(),
+        0 => meet_apart(fp, fq),
+        1 => meet_beyond_vertex(fp, fq, shared[0]),
+        2 => meet_beyond_edge(fp, fq, shared[0], shared[1]),
+        _ => !fp.degenerate,
     }
 }
 
@@ -184,14 +278,14 @@ fn corner_box(t: &[P3; 3]) -> Aabb {
     b
 }
 
-/// Meshes up to this many triangles keep every triangle's plane for the whole search (128
-/// bytes each: at most 128 MiB); larger ones make the two planes of each candidate pair anew.
+/// Meshes up to this many triangles keep every triangle's plane for the whole search (136
+/// bytes each: at most 136 MiB); larger ones make the two planes of each candidate pair anew.
 const PLANE_CACHE_MAX: usize = 1 << 20;
 
 /// The planes of the triangles of a collider by tree slot (position in the tree's order, so
 /// that the pairs of one subtree read nearby memory), kept or made on demand.
 enum Planes<'a> {
-    Kept(Vec<ExactPlane>),
+    Kept(Vec<Face>),
     OnDemand(&'a Collider),
 }
 
@@ -203,7 +297,7 @@ impl<'a> Planes<'a> {
         }
         // Made once per triangle instead of once per candidate pair (each triangle has about
         // ten neighbours whose boxes overlap its own).
-        let plane = |&i: &u32| ExactPlane::new(&collider.corners(i));
+        let plane = |&i: &u32| Face::new(&collider.corners(i));
         Planes::Kept(if crate::parallel::threads() == 1 || order.len() < 4096 {
             // Cheaper than the parallel machinery where it cannot pay off.
             order.iter().map(plane).collect()
@@ -218,9 +312,8 @@ impl<'a> Planes<'a> {
         match self {
             Planes::Kept(planes) => meet_elsewhere(&planes[a as usize], &planes[b as usize]),
             Planes::OnDemand(collider) => {
-                let plane = |slot: u32| {
-                    ExactPlane::new(&collider.corners(collider.bvh().order()[slot as usize]))
-                };
+                let plane =
+                    |slot: u32| Face::new(&collider.corners(collider.bvh().order()[slot as usize]));
                 meet_elsewhere(&plane(a), &plane(b))
             }
         }
@@ -316,12 +409,14 @@ impl Collider {
         if n < 2 {
             return Vec::new();
         }
-        let planes: Vec<ExactPlane> = (0..n).map(|i| ExactPlane::new(&self.corners(i))).collect();
-        let boxes: Vec<Aabb> = planes.iter().map(|p| corner_box(p.corners())).collect();
-        let mut out = Vec::new();
-        for i in 0..n as usize {
-            for j in i + 1..n as usize {
-                if boxes[i].overlaps(&boxes[j]) && meet_elsewhere(&planes[i], &planes[j]) {
+        let faces: Vec<Face> = (0..n).map(|i| Face::new(&self.corners(i))).collect();
+        // Room for two pairs a triangle: no reallocation on the usual tiny mesh.
+        let mut out = Vec::with_capacity(2 * n as usize);
+        for (i, fi) in faces.iter().enumerate() {
+            // The boxes are three corners each: made again per pair, cheaper than kept.
+            let bi = corner_box(fi.corners());
+            for (j, fj) in faces.iter().enumerate().skip(i + 1) {
+                if bi.overlaps(&corner_box(fj.corners())) && meet_elsewhere(fi, fj) {
                     out.push((i as u32, j as u32));
                 }
             }
@@ -335,9 +430,9 @@ impl Collider {
         let mut out: Vec<(u32, u32)> = (0..n)
             .into_par_iter()
             .flat_map_iter(|i| {
-                let pi = ExactPlane::new(&self.corners(i));
+                let pi = Face::new(&self.corners(i));
                 (i + 1..n).filter_map(move |j| {
-                    meet_elsewhere(&pi, &ExactPlane::new(&self.corners(j))).then_some((i, j))
+                    meet_elsewhere(&pi, &Face::new(&self.corners(j))).then_some((i, j))
                 })
             })
             .collect();

@@ -20,6 +20,7 @@
 use crate::exact::vector::{cross, sub};
 use core::cmp::Ordering;
 
+use super::predicates::Orient2d;
 use super::sign::slow_sign;
 use super::{ErrF64, Predicate};
 
@@ -53,6 +54,11 @@ pub trait Kernel {
     fn orient3d(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3], d: &[f64; 3]) -> Ordering {
         Self::plane(&[*a, *b, *c]).side(d)
     }
+    /// `orient2d(a, b, c)`, the sign of `(b - a) × (c - a)` in the plane.
+    #[inline]
+    fn orient2d(a: &[f64; 2], b: &[f64; 2], c: &[f64; 2]) -> Ordering {
+        Self::sign::<Orient2d, 6>(&[a[0], a[1], b[0], b[1], c[0], c[1]])
+    }
 }
 
 /// Exact signs: certified `f64` first (a semi-static filter for plane sides and `orient3d`,
@@ -77,6 +83,24 @@ impl Kernel for ExactKernel {
     #[inline(always)]
     fn plane(p: &[[f64; 3]; 3]) -> ExactPlane {
         ExactPlane::new(p)
+    }
+    /// A semi-static filter (Shewchuk's bound for rounded differences and products, plus the
+    /// underflow allowance), then the exact stages. The coplanar tests of engineering meshes
+    /// call it for every edge pair, so it avoids [`ErrF64`]'s per-operation bookkeeping.
+    #[inline]
+    fn orient2d(a: &[f64; 2], b: &[f64; 2], c: &[f64; 2]) -> Ordering {
+        let left = (b[0] - a[0]) * (c[1] - a[1]);
+        let right = (b[1] - a[1]) * (c[0] - a[0]);
+        let det = left - right;
+        // Infinite or NaN terms fail both comparisons: no certificate.
+        let bound = ORIENT2D_BOUND * (left.abs() + right.abs()) + UNDERFLOW;
+        if det > bound {
+            Ordering::Greater
+        } else if -det > bound {
+            Ordering::Less
+        } else {
+            slow_sign::<Orient2d, 6>(&[a[0], a[1], b[0], b[1], c[0], c[1]])
+        }
     }
 }
 
@@ -148,6 +172,9 @@ fn largest_component(n: &[f64; 3]) -> usize {
 /// Error bound factor of `w·(u×v)` from rounded differences: `(1+ε)^8 - 1 < 8.0000001ε`,
 /// rounded up together with the rounding of the permanent (ε = 2^-53).
 const ORIENT_BOUND: f64 = 1.0e-15;
+/// Error bound factor of `orient2d` from rounded differences and products, relative to
+/// `|left| + |right|`: Shewchuk's `(3 + 16ε)ε` (ε = 2^-53), rounded up.
+const ORIENT2D_BOUND: f64 = 3.4e-16;
 /// Error bound factor of a 2x2 minor `u_y v_z - u_z v_y` of rounded differences (`≈ 4ε`).
 const MINOR_BOUND: f64 = 5.0e-16;
 /// Absolute error allowance for underflow: every product that underflows errs by at most

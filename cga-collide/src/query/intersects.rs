@@ -47,7 +47,7 @@ use core::cmp::Ordering::{self, Equal, Greater, Less};
 use nalgebra::Point3;
 
 use crate::exact::predicates::{
-    BallBall, EdgeSide, LineDistance, Orient2d, PlaneDistance, PointPower, SegmentDot, SphereSphere,
+    BallBall, EdgeSide, LineDistance, PlaneDistance, PointPower, SegmentDot, SphereSphere,
 };
 use crate::exact::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 use crate::shape::bounded::{coords, corner_coords};
@@ -92,7 +92,7 @@ fn orient2d<K: Kernel>(a: &P2, b: &P2, c: &P2) -> Ordering {
     if (b[0] == a[0] || c[1] == a[1]) && (b[1] == a[1] || c[0] == a[0]) {
         return Equal;
     }
-    K::sign::<Orient2d, 6>(&[a[0], a[1], b[0], b[1], c[0], c[1]])
+    K::orient2d(a, b, c)
 }
 
 /// The two extreme points of collinear points (exact: order along an axis where they differ).
@@ -112,6 +112,16 @@ pub(crate) fn extremes<const D: usize>(p: &[[f64; D]]) -> ([f64; D], [f64; D]) {
         }
     }
     (p[0], p[0])
+}
+
+/// An axis along which all the points have the same coordinate: they lie in one plane
+/// perpendicular to it, which the projection dropping that coordinate maps one-to-one, so
+/// sets of these points meet exactly when their projections do. Comparisons only.
+#[inline]
+fn common_axis<const N: usize>(p: &[&P3; N]) -> Option<usize> {
+    (0..3)
+        .rev()
+        .find(|&k| p[1..].iter().all(|q| q[k] == p[0][k]))
 }
 
 /// Drops coordinate `k`.
@@ -135,10 +145,18 @@ fn seg2_seg2<K: Kernel>(a: &P2, b: &P2, c: &P2, d: &P2) -> bool {
     }
     let o3 = orient2d::<K>(c, d, a);
     let o4 = orient2d::<K>(c, d, b);
-    if o3 == o4 && o3 != Equal {
+    segments_cross([o1, o2, o3, o4], a, b, c, d)
+}
+
+/// Whether the closed 2D segments `ab` and `cd` meet, given `[orient2d(a, b, c),
+/// orient2d(a, b, d), orient2d(c, d, a), orient2d(c, d, b)]` (callers that test many edges
+/// compute each sign once).
+#[inline]
+fn segments_cross(o: [Ordering; 4], a: &P2, b: &P2, c: &P2, d: &P2) -> bool {
+    if (o[0] == o[1] && o[0] != Equal) || (o[2] == o[3] && o[2] != Equal) {
         return false;
     }
-    if o1 == Equal && o2 == Equal && o3 == Equal && o4 == Equal {
+    if o.iter().all(|&s| s == Equal) {
         // All on one line (or points): overlap of the intervals along an axis where they differ.
         let all = [*a, *b, *c, *d];
         let k = if all.iter().all(|p| p[0] == a[0]) {
@@ -153,12 +171,28 @@ fn seg2_seg2<K: Kernel>(a: &P2, b: &P2, c: &P2, d: &P2) -> bool {
     true
 }
 
-/// `x` in the non-degenerate 2D triangle `t` of orientation `s`.
-fn point_in_tri2<K: Kernel>(x: &P2, t: &[P2; 3], s: Ordering) -> bool {
-    (0..3).all(|i| {
-        let o = orient2d::<K>(&t[i], &t[(i + 1) % 3], x);
-        o == s || o == Equal
-    })
+/// The sides of `x` against the three edges `t[i] t[i+1]` of a 2D triangle.
+#[inline]
+fn edge_sides<K: Kernel>(t: &[P2; 3], x: &P2) -> [Ordering; 3] {
+    [
+        orient2d::<K>(&t[0], &t[1], x),
+        orient2d::<K>(&t[1], &t[2], x),
+        orient2d::<K>(&t[2], &t[0], x),
+    ]
+}
+
+/// A point with edge sides `o` is in the closed non-degenerate triangle of orientation `s`.
+#[inline]
+fn inside(o: &[Ordering; 3], s: Ordering) -> bool {
+    o.iter().all(|&x| x == s || x == Equal)
+}
+
+/// Points with edge sides `o` all lie strictly outside one edge of a triangle of orientation
+/// `s` (the open half-plane beyond that edge's line holds them, the triangle does not meet it).
+#[inline]
+fn beyond_one_edge<const M: usize>(o: &[[Ordering; 3]; M], s: Ordering) -> bool {
+    let outside = s.reverse();
+    (0..3).any(|e| o.iter().all(|x| x[e] == outside))
 }
 
 fn seg2_tri2<K: Kernel>(a: &P2, b: &P2, t: &[P2; 3]) -> bool {
@@ -167,11 +201,28 @@ fn seg2_tri2<K: Kernel>(a: &P2, b: &P2, t: &[P2; 3]) -> bool {
         let (e0, e1) = extremes(t);
         return seg2_seg2::<K>(a, b, &e0, &e1);
     }
-    if a == b {
-        // A point: inside the closed triangle or not (the edge tests could add nothing).
-        return point_in_tri2::<K>(a, t, s);
+    // Every sign once: `a` and `b` against the edges, the corners against the line `ab`; the
+    // edge tests below reuse them.
+    let oa = edge_sides::<K>(t, a);
+    if inside(&oa, s) {
+        return true;
     }
-    point_in_tri2::<K>(a, t, s) || (0..3).any(|i| seg2_seg2::<K>(a, b, &t[i], &t[(i + 1) % 3]))
+    if a == b {
+        return false;
+    }
+    let ob = edge_sides::<K>(t, b);
+    if beyond_one_edge(&[oa, ob], s) {
+        return false;
+    }
+    let ot = [
+        orient2d::<K>(a, b, &t[0]),
+        orient2d::<K>(a, b, &t[1]),
+        orient2d::<K>(a, b, &t[2]),
+    ];
+    (0..3).any(|i| {
+        let j = (i + 1) % 3;
+        segments_cross([ot[i], ot[j], oa[i], ob[i]], a, b, &t[i], &t[j])
+    })
 }
 
 fn tri2_tri2<K: Kernel>(t: &[P2; 3], u: &[P2; 3]) -> bool {
@@ -185,10 +236,38 @@ fn tri2_tri2<K: Kernel>(t: &[P2; 3], u: &[P2; 3]) -> bool {
         let (e0, e1) = extremes(u);
         return seg2_tri2::<K>(&e0, &e1, t);
     }
-    point_in_tri2::<K>(&t[0], u, su)
-        || point_in_tri2::<K>(&u[0], t, st)
-        || (0..3)
-            .any(|i| (0..3).any(|j| seg2_seg2::<K>(&t[i], &t[(i + 1) % 3], &u[j], &u[(j + 1) % 3])))
+    // Every corner against every edge of the other triangle, once (18 signs instead of up to
+    // 42 for the nine edge pairs); a corner inside the other, or all corners beyond one edge,
+    // decide early.
+    let ut = [0, 1, 2].map(|j| edge_sides::<K>(t, &u[j]));
+    if inside(&ut[0], st) {
+        return true;
+    }
+    if beyond_one_edge(&ut, st) {
+        return false;
+    }
+    let tu = [0, 1, 2].map(|i| edge_sides::<K>(u, &t[i]));
+    if inside(&tu[0], su) {
+        return true;
+    }
+    if beyond_one_edge(&tu, su) {
+        return false;
+    }
+    // Edge `t[i] t[i+1]` against edge `u[j] u[j+1]`: `ut[j][i]` is the side of `u[j]` against
+    // the first, `tu[i][j]` that of `t[i]` against the second.
+    (0..3).any(|i| {
+        let i1 = (i + 1) % 3;
+        (0..3).any(|j| {
+            let j1 = (j + 1) % 3;
+            segments_cross(
+                [ut[j][i], ut[j1][i], tu[i][j], tu[i1][j]],
+                &t[i],
+                &t[i1],
+                &u[j],
+                &u[j1],
+            )
+        })
+    })
 }
 
 // ---------------------------------------------------------------- 3D
@@ -197,6 +276,10 @@ fn seg_seg<K: Kernel>(a: &P3, b: &P3, c: &P3, d: &P3) -> bool {
     if a == b && c != d {
         // A point against a segment: the segment carries the line.
         return seg_seg::<K>(c, d, a, b);
+    }
+    if let Some(k) = common_axis(&[a, b, c, d]) {
+        // In one axis-parallel plane (faces of engineering meshes): one projection, no 3D sign.
+        return seg2_seg2::<K>(&proj(a, k), &proj(b, k), &proj(c, k), &proj(d, k));
     }
     if orient3d::<K>(a, b, c, d) != Equal {
         return false;
@@ -220,17 +303,33 @@ fn seg_seg<K: Kernel>(a: &P3, b: &P3, c: &P3, d: &P3) -> bool {
 }
 
 fn seg_tri<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3]) -> bool {
+    if let Some(meet) = seg_tri_axis_plane::<K>(a, b, t) {
+        return meet;
+    }
     let pl = K::plane(t);
     if pl.is_degenerate() {
         let (e0, e1) = extremes(t);
         return seg_seg::<K>(a, b, &e0, &e1);
     }
-    seg_tri_plane::<K>(a, b, t, &pl)
+    seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, &pl)
 }
 
 /// Segment against the non-degenerate triangle `t` whose plane is `pl`.
 fn seg_tri_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3], pl: &K::Plane) -> bool {
+    if let Some(meet) = seg_tri_axis_plane::<K>(a, b, t) {
+        return meet;
+    }
     seg_tri_sides::<K>(a, b, pl.side(a), pl.side(b), t, pl)
+}
+
+/// Segment against triangle (either may be degenerate) when all five points lie in one
+/// axis-parallel plane (faces of engineering meshes): one projection decides, with no plane
+/// and no 3D sign. `None` otherwise.
+#[inline]
+fn seg_tri_axis_plane<K: Kernel>(a: &P3, b: &P3, t: &[P3; 3]) -> Option<bool> {
+    let k = common_axis(&[a, b, &t[0], &t[1], &t[2]])?;
+    let tt = [proj(&t[0], k), proj(&t[1], k), proj(&t[2], k)];
+    Some(seg2_tri2::<K>(&proj(a, k), &proj(b, k), &tt))
 }
 
 /// Exact: do the closed triangles of the planes `p` and `q` share a point? What
@@ -240,11 +339,38 @@ pub(crate) fn triangles_meet(p: &ExactPlane, q: &ExactPlane) -> bool {
     tri_tri_planes::<ExactKernel>(p.corners(), q.corners(), p, || *q)
 }
 
-/// Exact: does the closed segment `ab` meet the closed triangle `t` (raw corners, finite; either
-/// may be degenerate)?
+/// Exact: do the closed triangles `p` and `q` (either may be degenerate), all of whose corners
+/// have the same coordinate `k`, share a point? In the projection dropping `k`, one-to-one on
+/// their plane.
+pub(crate) fn coplanar_triangles_meet(p: &[P3; 3], q: &[P3; 3], k: usize) -> bool {
+    let a = [proj(&p[0], k), proj(&p[1], k), proj(&p[2], k)];
+    let b = [proj(&q[0], k), proj(&q[1], k), proj(&q[2], k)];
+    tri2_tri2::<ExactKernel>(&a, &b)
+}
+
+/// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t` whose plane
+/// is `pl`?
 #[inline]
-pub(crate) fn segment_meets_triangle(a: &P3, b: &P3, t: &[P3; 3]) -> bool {
-    seg_tri::<ExactKernel>(a, b, t)
+pub(crate) fn segment_meets_triangle_plane(a: &P3, b: &P3, t: &[P3; 3], pl: &ExactPlane) -> bool {
+    seg_tri_plane::<ExactKernel>(a, b, t, pl)
+}
+
+/// Exact: do `a` and `b`, in the plane `pl` of a non-degenerate triangle and off the line
+/// `uv` in it, lie on the same side of that line? In the projection that is one-to-one on the
+/// plane when it is certified (two 2D orientations), otherwise from the 3D predicate.
+pub(crate) fn same_side_in_plane(pl: &ExactPlane, u: &P3, v: &P3, a: &P3, b: &P3) -> bool {
+    match pl.projection_axis() {
+        Some(k) => {
+            let (u, v) = (proj(u, k), proj(v, k));
+            let side_a = orient2d::<ExactKernel>(&u, &v, &proj(a, k));
+            side_a != Equal && side_a == orient2d::<ExactKernel>(&u, &v, &proj(b, k))
+        }
+        None => {
+            ExactKernel::sign::<EdgeSide, 12>(&[
+                u[0], u[1], u[2], v[0], v[1], v[2], a[0], a[1], a[2], b[0], b[1], b[2],
+            ]) == Greater
+        }
+    }
 }
 
 /// Exact: do the closed segments `ab` and `cd` (raw corners, finite) share a point?
