@@ -215,3 +215,62 @@ fn adjacent_triangles() {
     let mesh = TriMesh::new(w, vec![[0, 1, 2], [0, 3, 4]]).unwrap();
     assert_eq!(Collider::new(mesh).self_intersections(), vec![(0, 1)]);
 }
+
+/// Triangles on a few lattice points of a plane, degenerate ones (collinear or repeated
+/// corners) included, as 2D points and index triples; up to 40 triangles, so that both the
+/// tiny-mesh scan and the tree are used.
+fn planar_lattice_mesh() -> impl Strategy<Value = (Vec<[i32; 2]>, Vec<[u32; 3]>)> {
+    (
+        proptest::collection::vec((-2i32..=2, -2i32..=2).prop_map(|(x, y)| [x, y]), 3..10),
+        proptest::collection::vec((0u32..10, 0u32..10, 0u32..10), 2..40),
+    )
+        .prop_map(|(mut v, t)| {
+            v.sort_unstable();
+            v.dedup();
+            let n = v.len() as u32;
+            let tris = t
+                .into_iter()
+                .map(|(a, b, c)| [a % n, b % n, c % n])
+                .collect();
+            (v, tris)
+        })
+}
+
+/// The planar mesh placed by `f`, an injective affine map: intersections are preserved.
+fn placed(v: &[[i32; 2]], t: &[[u32; 3]], f: impl Fn(f64, f64) -> [f64; 3]) -> TriMesh {
+    let vertices = v
+        .iter()
+        .map(|&[x, y]| {
+            let [a, b, c] = f(f64::from(x), f64::from(y));
+            Point3::new(a, b, c)
+        })
+        .collect();
+    TriMesh::new(vertices, t.to_vec()).unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Faces in one axis-parallel plane are decided in its projection (corners at shared
+    /// vertices, segments for degenerate faces); the same mesh in a tilted plane goes through
+    /// the general 3D tests. Both must give the same pairs, and the rational oracle where no
+    /// face is degenerate.
+    #[test]
+    fn axis_plane_shortcuts_match_the_tilted_mesh((v, t) in planar_lattice_mesh()) {
+        let tilted = Collider::new(placed(&v, &t, |x, y| [x, y, x + 2.0 * y])).self_intersections();
+        for flat in [
+            placed(&v, &t, |x, y| [x, y, 0.5]),
+            placed(&v, &t, |x, y| [-3.0, x, y]),
+            placed(&v, &t, |x, y| [y, 7.0, x]),
+        ] {
+            let c = Collider::new(flat.clone());
+            prop_assert_eq!(&c.self_intersections(), &tilted);
+            prop_assert_eq!(c.self_intersects(), !tilted.is_empty());
+            prop_assert_eq!(&c.with_mode(Mode::Brute).self_intersections(), &tilted);
+            let all_proper = t.iter().all(|tri| non_degenerate(flat.vertices(), tri));
+            if all_proper {
+                prop_assert_eq!(&tilted, &oracle_pairs(&flat));
+            }
+        }
+    }
+}

@@ -25,8 +25,10 @@ use crate::collider::{Collider, Mode};
 use crate::exact::{ExactPlane, PlaneSide};
 use crate::parallel::*;
 use crate::query::intersects::{
-    coplanar_triangles_meet, extremes, same_side_in_plane, segment_meets_triangle_plane,
-    segment_meets_triangle_with_sides, segments_meet, triangles_meet,
+    coplanar_orientation, coplanar_ray_in_corner, coplanar_same_ray,
+    coplanar_segment_meets_triangle, coplanar_segments_meet, coplanar_triangles_meet, extremes,
+    same_side_in_plane, segment_meets_triangle_plane, segment_meets_triangle_with_sides,
+    segments_meet, triangles_meet,
 };
 
 type P3 = [f64; 3];
@@ -157,18 +159,20 @@ fn meet_beyond_vertex(fp: &Face, fq: &Face, v: &P3) -> bool {
     // The far corners' sides against the other plane once: most neighbours around a vertex of
     // a surface are told apart by these two or four signs, and the rest reuse them. Sides
     // against a degenerate face's plane are all zero: not computed.
+    if let Some(k) = common_flat_axis(fp, fq) {
+        return meet_beyond_vertex_flat(fp, fq, v, k);
+    }
     let (p, q) = (fp.corners(), fq.corners());
     let (far_p, far_q) = (opposite(p, v), opposite(q, v));
-    let coplanar = common_flat_axis(fp, fq).is_some();
     let mut sides_p = [Equal; 2];
-    if !fq.degenerate && !coplanar {
+    if !fq.degenerate {
         sides_p = [fq.plane.side(far_p[0]), fq.plane.side(far_p[1])];
         if strictly_one_side(sides_p) {
             return false;
         }
     }
     let mut sides_q = [Equal; 2];
-    if !fp.degenerate && !coplanar {
+    if !fp.degenerate {
         sides_q = [fp.plane.side(far_q[0]), fp.plane.side(far_q[1])];
         if strictly_one_side(sides_q) {
             return false;
@@ -180,6 +184,46 @@ fn meet_beyond_vertex(fp: &Face, fq: &Face, v: &P3) -> bool {
     // Non-degenerate: the far edge of one meets the other (see the module docs).
     segment_meets_triangle_with_sides(far_p[0], far_p[1], sides_p, q, &fq.plane)
         || segment_meets_triangle_with_sides(far_q[0], far_q[1], sides_q, p, &fp.plane)
+}
+
+/// How a face leaves its vertex `v`, near `v`: a triangle spans the corner between the rays to
+/// its far corners (with that corner's orientation), a degenerate face the rays to its far
+/// ends (one, or two when `v` is inside its segment).
+enum Spread {
+    Corner([P3; 2], core::cmp::Ordering),
+    Rays([Option<P3>; 2]),
+}
+
+impl Spread {
+    fn of(f: &Face, v: &P3, k: usize) -> Self {
+        if f.degenerate {
+            let (a, b) = f.segment();
+            return Spread::Rays([a, b].map(|e| (e != *v).then_some(e)));
+        }
+        let [x1, x2] = opposite(f.corners(), v);
+        Spread::Corner([*x1, *x2], coplanar_orientation(v, x1, x2, k))
+    }
+}
+
+/// [`meet_beyond_vertex`] for faces in one axis plane `x_k = c`. Near `v` each face is its
+/// corner (or rays), and a triangle lies within its corner, so they meet beyond `v` exactly
+/// when their corners share a ray; two closed corners narrower than a half-plane that share a
+/// ray share one of their boundary rays. A few 2D signs instead of segment tests.
+fn meet_beyond_vertex_flat(fp: &Face, fq: &Face, v: &P3, k: usize) -> bool {
+    let in_corner = |x: &[P3; 2], s, e: &P3| coplanar_ray_in_corner(v, &x[0], &x[1], s, e, k);
+    match (Spread::of(fp, v, k), Spread::of(fq, v, k)) {
+        (Spread::Corner(x, s), Spread::Corner(y, t)) => {
+            x.iter().any(|e| in_corner(&y, t, e)) || y.iter().any(|e| in_corner(&x, s, e))
+        }
+        (Spread::Corner(x, s), Spread::Rays(r)) | (Spread::Rays(r), Spread::Corner(x, s)) => {
+            r.iter().flatten().any(|e| in_corner(&x, s, e))
+        }
+        (Spread::Rays(r1), Spread::Rays(r2)) => r1.iter().flatten().any(|e1| {
+            r2.iter()
+                .flatten()
+                .any(|e2| coplanar_same_ray(v, e1, e2, k))
+        }),
+    }
 }
 
 /// Two signs, nonzero and equal.
@@ -226,7 +270,14 @@ fn meet_beyond_edge(fp: &Face, fq: &Face, u: &P3, v: &P3) -> bool {
 /// face is degenerate (no sides against its plane).
 fn meet_apart(fp: &Face, fq: &Face) -> bool {
     if let Some(k) = common_flat_axis(fp, fq) {
-        return coplanar_triangles_meet(fp.corners(), fq.corners(), k);
+        // One axis plane: in its projection, degenerate faces as the segments they are.
+        let ((a, b), (c, d)) = (fp.segment(), fq.segment());
+        return match (fp.degenerate, fq.degenerate) {
+            (false, false) => coplanar_triangles_meet(fp.corners(), fq.corners(), k),
+            (true, false) => coplanar_segment_meets_triangle(&a, &b, fq.corners(), k),
+            (false, true) => coplanar_segment_meets_triangle(&c, &d, fp.corners(), k),
+            (true, true) => coplanar_segments_meet(&a, &b, &c, &d, k),
+        };
     }
     match (fp.degenerate, fq.degenerate) {
         (false, false) => triangles_meet(&fp.plane, &fq.plane),
@@ -409,14 +460,17 @@ impl Collider {
         if n < 2 {
             return Vec::new();
         }
-        let faces: Vec<Face> = (0..n).map(|i| Face::new(&self.corners(i))).collect();
+        let faces: Vec<(Face, Aabb)> = (0..n)
+            .map(|i| {
+                let face = Face::new(&self.corners(i));
+                (face, corner_box(face.corners()))
+            })
+            .collect();
         // Room for two pairs a triangle: no reallocation on the usual tiny mesh.
         let mut out = Vec::with_capacity(2 * n as usize);
-        for (i, fi) in faces.iter().enumerate() {
-            // The boxes are three corners each: made again per pair, cheaper than kept.
-            let bi = corner_box(fi.corners());
-            for (j, fj) in faces.iter().enumerate().skip(i + 1) {
-                if bi.overlaps(&corner_box(fj.corners())) && meet_elsewhere(fi, fj) {
+        for (i, (fi, bi)) in faces.iter().enumerate() {
+            for (j, (fj, bj)) in faces.iter().enumerate().skip(i + 1) {
+                if bi.overlaps(bj) && meet_elsewhere(fi, fj) {
                     out.push((i as u32, j as u32));
                 }
             }

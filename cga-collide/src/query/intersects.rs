@@ -348,6 +348,56 @@ pub(crate) fn coplanar_triangles_meet(p: &[P3; 3], q: &[P3; 3], k: usize) -> boo
     tri2_tri2::<ExactKernel>(&a, &b)
 }
 
+/// Exact, for points with the same coordinate `k` (in the projection dropping it): the
+/// orientation of the corner `x1 v x2`, nonzero for a triangle's corner.
+pub(crate) fn coplanar_orientation(v: &P3, x1: &P3, x2: &P3, k: usize) -> Ordering {
+    orient2d::<ExactKernel>(&proj(v, k), &proj(x1, k), &proj(x2, k))
+}
+
+/// Exact, for points with the same coordinate `k`: does the ray from `v` through `e` (`e ≠ v`)
+/// lie in the closed corner at `v` spanned by the rays through `x1` and `x2`, of orientation
+/// `s` (nonzero, see [`coplanar_orientation`])? Writing `e - v = α (x1 - v) + β (x2 - v)`, the
+/// two signs are those of `β s` and `α s`.
+pub(crate) fn coplanar_ray_in_corner(
+    v: &P3,
+    x1: &P3,
+    x2: &P3,
+    s: Ordering,
+    e: &P3,
+    k: usize,
+) -> bool {
+    let (v, e) = (proj(v, k), proj(e, k));
+    let first = orient2d::<ExactKernel>(&v, &proj(x1, k), &e);
+    (first == s || first == Equal) && {
+        let second = orient2d::<ExactKernel>(&v, &e, &proj(x2, k));
+        second == s || second == Equal
+    }
+}
+
+/// Exact, for points with the same coordinate `k`: are the rays from `v` through `e1` and
+/// through `e2` (both `≠ v`) one ray?
+pub(crate) fn coplanar_same_ray(v: &P3, e1: &P3, e2: &P3, k: usize) -> bool {
+    let (v2, e1_2, e2_2) = (proj(v, k), proj(e1, k), proj(e2, k));
+    if orient2d::<ExactKernel>(&v2, &e1_2, &e2_2) != Equal {
+        return false;
+    }
+    // On one line through `v`: the same ray when they leave `v` the same way along an axis
+    // where `e1` differs from `v` (where `e2` differs too, the line not being perpendicular).
+    let j = (0..3).find(|&j| e1[j] != v[j]).unwrap_or(0);
+    (e1[j] > v[j]) == (e2[j] > v[j])
+}
+
+/// Exact: [`coplanar_triangles_meet`] for a segment `ab` and a triangle `t`.
+pub(crate) fn coplanar_segment_meets_triangle(a: &P3, b: &P3, t: &[P3; 3], k: usize) -> bool {
+    let tt = [proj(&t[0], k), proj(&t[1], k), proj(&t[2], k)];
+    seg2_tri2::<ExactKernel>(&proj(a, k), &proj(b, k), &tt)
+}
+
+/// Exact: [`coplanar_triangles_meet`] for two segments `ab` and `cd`.
+pub(crate) fn coplanar_segments_meet(a: &P3, b: &P3, c: &P3, d: &P3, k: usize) -> bool {
+    seg2_seg2::<ExactKernel>(&proj(a, k), &proj(b, k), &proj(c, k), &proj(d, k))
+}
+
 /// Exact: does the closed segment `ab` meet the closed non-degenerate triangle `t` whose plane
 /// is `pl`?
 #[inline]
