@@ -17,7 +17,7 @@
 //!   `v` when both extend past the same end;
 //! * all three positions shared (a duplicated triangle): reported unless degenerate.
 
-use core::cmp::Ordering::Equal;
+use core::cmp::Ordering::{self, Equal};
 use std::ops::ControlFlow;
 
 use crate::bounding::Aabb;
@@ -44,6 +44,9 @@ pub(crate) struct Face {
     degenerate: bool,
     /// `k` when every corner has the same coordinate `k` (the largest such `k`), else `NOT_FLAT`.
     flat: u8,
+    /// For a flat non-degenerate face, the orientation of its corners in the projection
+    /// dropping `flat` (nonzero); `Equal` otherwise.
+    flat_orientation: Ordering,
 }
 
 /// [`Face::flat`] of a triangle in no axis-parallel plane.
@@ -67,10 +70,16 @@ impl Face {
             .rev()
             .find(|&k| t[1][k] == t[0][k] && t[2][k] == t[0][k])
             .map_or(NOT_FLAT, |k| k as u8);
+        let flat_orientation = if flat == NOT_FLAT || degenerate {
+            Equal
+        } else {
+            coplanar_orientation(&t[0], &t[1], &t[2], flat as usize)
+        };
         Face {
             plane,
             degenerate,
             flat,
+            flat_orientation,
         }
     }
 
@@ -190,18 +199,27 @@ fn meet_beyond_vertex(fp: &Face, fq: &Face, v: &P3) -> bool {
 /// its far corners (with that corner's orientation), a degenerate face the rays to its far
 /// ends (one, or two when `v` is inside its segment).
 enum Spread {
-    Corner([P3; 2], core::cmp::Ordering),
+    Corner([P3; 2], Ordering),
     Rays([Option<P3>; 2]),
 }
 
 impl Spread {
-    fn of(f: &Face, v: &P3, k: usize) -> Self {
+    /// How `f`, flat (see [`Face::flat`]), leaves its vertex `v`.
+    fn of(f: &Face, v: &P3) -> Self {
         if f.degenerate {
             let (a, b) = f.segment();
             return Spread::Rays([a, b].map(|e| (e != *v).then_some(e)));
         }
-        let [x1, x2] = opposite(f.corners(), v);
-        Spread::Corner([*x1, *x2], coplanar_orientation(v, x1, x2, k))
+        // With `v`'s neighbours in cyclic order, the corner turns like the face.
+        let c = f.corners();
+        let far = if *v == c[1] {
+            [c[2], c[0]]
+        } else if *v == c[2] {
+            [c[0], c[1]]
+        } else {
+            [c[1], c[2]]
+        };
+        Spread::Corner(far, f.flat_orientation)
     }
 }
 
@@ -211,7 +229,7 @@ impl Spread {
 /// ray share one of their boundary rays. A few 2D signs instead of segment tests.
 fn meet_beyond_vertex_flat(fp: &Face, fq: &Face, v: &P3, k: usize) -> bool {
     let in_corner = |x: &[P3; 2], s, e: &P3| coplanar_ray_in_corner(v, &x[0], &x[1], s, e, k);
-    match (Spread::of(fp, v, k), Spread::of(fq, v, k)) {
+    match (Spread::of(fp, v), Spread::of(fq, v)) {
         (Spread::Corner(x, s), Spread::Corner(y, t)) => {
             x.iter().any(|e| in_corner(&y, t, e)) || y.iter().any(|e| in_corner(&x, s, e))
         }
@@ -298,10 +316,11 @@ pub(crate) fn meet_elsewhere(fp: &Face, fq: &Face) -> bool {
     let (p, q) = (fp.corners(), fq.corners());
     // The distinct positions of `p` that `q` has too (no allocation: this runs for every
     // candidate pair).
+    // Only a degenerate face can repeat a position.
     let mut shared = [&p[0]; 3];
     let mut n = 0;
     for (k, x) in p.iter().enumerate() {
-        if q.contains(x) && !p[..k].contains(x) {
+        if q.contains(x) && !(fp.degenerate && p[..k].contains(x)) {
             shared[n] = x;
             n += 1;
         }

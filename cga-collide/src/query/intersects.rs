@@ -211,6 +211,9 @@ fn seg2_tri2<K: Kernel>(a: &P2, b: &P2, t: &[P2; 3]) -> bool {
         return false;
     }
     let ob = edge_sides::<K>(t, b);
+    if inside(&ob, s) {
+        return true;
+    }
     if beyond_one_edge(&[oa, ob], s) {
         return false;
     }
@@ -239,15 +242,17 @@ fn tri2_tri2<K: Kernel>(t: &[P2; 3], u: &[P2; 3]) -> bool {
     // Every corner against every edge of the other triangle, once (18 signs instead of up to
     // 42 for the nine edge pairs); a corner inside the other, or all corners beyond one edge,
     // decide early.
+    // Any corner inside the other closed triangle decides at once (touching neighbours: a
+    // corner on the other's edge); the edge tests would find it only after every sign.
     let ut = [0, 1, 2].map(|j| edge_sides::<K>(t, &u[j]));
-    if inside(&ut[0], st) {
+    if ut.iter().any(|o| inside(o, st)) {
         return true;
     }
     if beyond_one_edge(&ut, st) {
         return false;
     }
     let tu = [0, 1, 2].map(|i| edge_sides::<K>(u, &t[i]));
-    if inside(&tu[0], su) {
+    if tu.iter().any(|o| inside(o, su)) {
         return true;
     }
     if beyond_one_edge(&tu, su) {
