@@ -20,8 +20,10 @@
 use core::cmp::Ordering::{self, Equal};
 use std::ops::ControlFlow;
 
+use arrayvec::ArrayVec;
+
 use crate::bounding::Aabb;
-use crate::collider::{Collider, Mode};
+use crate::collider::{Collider, Mode, EAGER_TREE_MIN};
 use crate::exact::{ExactPlane, PlaneSide};
 use crate::parallel::*;
 use crate::query::intersects::{
@@ -415,7 +417,7 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return self.self_intersections_brute();
         }
-        if !self.has_bvh() {
+        if self.is_tiny_without_tree() {
             return self.self_intersections_small();
         }
         let planes = Planes::of(self);
@@ -456,7 +458,7 @@ impl Collider {
         if self.mode() == Mode::Brute {
             return !self.self_intersections_brute().is_empty();
         }
-        if !self.has_bvh() {
+        if self.is_tiny_without_tree() {
             return !self.self_intersections_small().is_empty();
         }
         // Stops early: planes made per candidate pair, not for the whole mesh up front.
@@ -472,6 +474,12 @@ impl Collider {
             .is_break()
     }
 
+    /// A mesh under [`EAGER_TREE_MIN`] triangles whose tree was never built: the pairs are
+    /// found without one.
+    fn is_tiny_without_tree(&self) -> bool {
+        !self.has_bvh() && self.mesh().num_triangles() < EAGER_TREE_MIN
+    }
+
     /// A tiny mesh whose tree was never built (fewer than 32 triangles): every pair, after an
     /// exact comparison of their boxes (the pairs the tree would have enumerated), in order.
     fn self_intersections_small(&self) -> Vec<(u32, u32)> {
@@ -479,12 +487,12 @@ impl Collider {
         if n < 2 {
             return Vec::new();
         }
-        let faces: Vec<(Face, Aabb)> = (0..n)
-            .map(|i| {
-                let face = Face::new(&self.corners(i));
-                (face, corner_box(face.corners()))
-            })
-            .collect();
+        // On the stack: a tiny mesh's whole cost is a few microseconds, an allocation counts.
+        let mut faces = ArrayVec::<(Face, Aabb), EAGER_TREE_MIN>::new();
+        for i in 0..n {
+            let face = Face::new(&self.corners(i));
+            faces.push((face, corner_box(face.corners())));
+        }
         // Room for two pairs a triangle: no reallocation on the usual tiny mesh.
         let mut out = Vec::with_capacity(2 * n as usize);
         for (i, (fi, bi)) in faces.iter().enumerate() {
