@@ -18,6 +18,9 @@
 //! `Collider::intersecting_pairs` (every pair of a triangle of A and one of B whose closed
 //! triangles meet), the pairs written to `OUT_FILE`, one JSON line.
 //!
+//! The colliders are built as `Collider::new` builds them (binned SAH), or with
+//! `BuildStrategy::Morton` when `DEMO_MESHES_BUILD=morton` (the one-shot build).
+//!
 //! Everything runs inside a one-thread rayon pool. Arguments starting with `--` (cargo bench
 //! passes `--bench`) are ignored.
 
@@ -28,6 +31,7 @@ use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use cga_collide::bounding::BuildStrategy;
 use cga_collide::collider::Collider;
 use cga_collide::shape::mesh::TriMesh;
 use serde_json::{json, Value};
@@ -114,6 +118,15 @@ const MIN_TOTAL_MS: f64 = 20.0;
 /// At most this many runs per item.
 const MAX_RUNS: usize = 100_000;
 
+/// The tree build: `Collider::new`'s binned SAH, or the one-shot Morton build with
+/// `DEMO_MESHES_BUILD=morton`.
+fn build_strategy() -> BuildStrategy {
+    match std::env::var("DEMO_MESHES_BUILD").as_deref() {
+        Ok("morton") => BuildStrategy::Morton,
+        _ => BuildStrategy::Sah,
+    }
+}
+
 /// Whether another timed run is due after `done` runs taking `sum_ms` in all.
 fn more_runs(done: usize, repeat: usize, sum_ms: f64) -> bool {
     done < repeat || (sum_ms < MIN_TOTAL_MS && done < MAX_RUNS)
@@ -135,7 +148,7 @@ fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
         let copy = mesh.clone();
         cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
-        let collider = Collider::new(copy);
+        let collider = Collider::with_strategy(copy, build_strategy());
         let build = ms(t0);
         pairs = collider.self_intersections();
         let total = ms(t0);
@@ -191,7 +204,11 @@ fn pair_mode(a: &str, b: &str, repeat: usize, out_file: &str) -> Res<()> {
         let (ca, cb) = (ma.clone(), mb.clone());
         cga_collide::exact::reset_stage_counts();
         let t0 = Instant::now();
-        let (ca, cb) = (Collider::new(ca), Collider::new(cb));
+        let strategy = build_strategy();
+        let (ca, cb) = (
+            Collider::with_strategy(ca, strategy),
+            Collider::with_strategy(cb, strategy),
+        );
         let build = ms(t0);
         pairs = ca.intersecting_pairs(&cb);
         let total = ms(t0);

@@ -17,6 +17,8 @@
 # Environment:
 #   DEMO_MESHES_DIR   where the meshes are (extracted there if it has none; default: a temp dir)
 #   DEMO_MESHES_TAR   CGAL's data archive (default /usr/share/doc/libcgal-dev/data.tar.gz)
+#   DEMO_MESHES_BUILD our tree build: unset for `Collider::new`'s (binned SAH), `morton` for
+#                     the one-shot `BuildStrategy::Morton`
 #   DEMO_MESHES_OUT   where the JSON lines, pair files and tables go (default: a new
 #                     /tmp/demo_meshes.XXXXXX, kept and printed at the end)
 set -euo pipefail

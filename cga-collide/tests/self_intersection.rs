@@ -5,6 +5,7 @@
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Ring};
 use cga_collide::nalgebra::Point3;
 
+use cga_collide::bounding::BuildStrategy;
 use cga_collide::collider::{Collider, Mode};
 use cga_collide::TriMesh;
 use num_traits::Signed;
@@ -267,6 +268,8 @@ proptest! {
             prop_assert_eq!(&c.self_intersections(), &tilted);
             prop_assert_eq!(c.self_intersects(), !tilted.is_empty());
             prop_assert_eq!(&c.with_mode(Mode::Brute).self_intersections(), &tilted);
+            let once = Collider::with_strategy(flat.clone(), BuildStrategy::Morton);
+            prop_assert_eq!(&once.self_intersections(), &tilted);
             let all_proper = t.iter().all(|tri| non_degenerate(flat.vertices(), tri));
             if all_proper {
                 prop_assert_eq!(&tilted, &oracle_pairs(&flat));

@@ -8,6 +8,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 
+use cga_collide::bounding::BuildStrategy;
 use cga_collide::collider::Collider;
 use clap::Args;
 use serde_json::json;
@@ -33,7 +34,9 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     output::check_opt("--pairs", args.pairs.as_deref(), None)?;
     let mesh = load_mesh(&args.mesh, "")?;
     let start = Instant::now();
-    let collider = Collider::new(mesh);
+    // One question of a collider built for it: the Morton build costs a third of the SAH one,
+    // and the self-intersection pairs do not depend on the tree.
+    let collider = Collider::with_strategy(mesh, BuildStrategy::Morton);
     let build = start.elapsed();
     let start = Instant::now();
     cga_collide::exact::reset_stage_counts();

@@ -546,6 +546,13 @@ impl Bvh {
     }
 }
 
+/// A node before its range and box are known.
+const BLANK: BvhNode = BvhNode {
+    bounds: Aabb::EMPTY,
+    start: 0,
+    count: 0,
+};
+
 /// The shape of a hierarchy over the records (its nodes with empty boxes, and the leaf order).
 /// The records are partitioned in place, so each level reads them contiguously; the
 /// bounds of the centroids of a node's children come from its split, never from another pass.
@@ -555,15 +562,10 @@ fn shape(mut recs: Vec<Record>, strategy: BuildStrategy) -> (Vec<BvhNode>, Vec<u
     }
     let n = recs.len();
     let mut ids = vec![0u8; n];
-    let blank = BvhNode {
-        bounds: Aabb::EMPTY,
-        start: 0,
-        count: 0,
-    };
     // At most 2n - 1 nodes (leaves of one); the unused room is given back at the end, so the
     // array is never copied while it grows.
     let mut nodes = Vec::with_capacity((2 * n).max(1));
-    nodes.push(blank);
+    nodes.push(BLANK);
     let mut stack = vec![Task {
         node: 0,
         s: 0,
@@ -600,8 +602,8 @@ fn shape(mut recs: Vec<Record>, strategy: BuildStrategy) -> (Vec<BvhNode>, Vec<u
         let split = split.unwrap_or_else(|| median_split(&mut recs[s..e], axis));
         let mid = s + split.mid;
         let left = nodes.len();
-        nodes.push(blank);
-        nodes.push(blank);
+        nodes.push(BLANK);
+        nodes.push(BLANK);
         nodes[node].start = left as u32;
         stack.push(Task {
             node: left + 1,
@@ -655,13 +657,8 @@ fn shape_morton(recs: &[Record]) -> (Vec<BvhNode>, Vec<u32>) {
         })
         .collect();
     keys.sort_unstable_by_key(|&(code, _)| code);
-    let blank = BvhNode {
-        bounds: Aabb::EMPTY,
-        start: 0,
-        count: 0,
-    };
     let mut nodes = Vec::with_capacity((2 * n).max(1));
-    nodes.push(blank);
+    nodes.push(BLANK);
     let mut stack = vec![(0usize, 0usize, n)];
     while let Some((node, s, e)) = stack.pop() {
         if e - s <= MAX_LEAF {
@@ -678,8 +675,8 @@ fn shape_morton(recs: &[Record]) -> (Vec<BvhNode>, Vec<u32>) {
             s + keys[s..e].partition_point(|&(code, _)| code >> bit & 1 == 0)
         };
         let left = nodes.len();
-        nodes.push(blank);
-        nodes.push(blank);
+        nodes.push(BLANK);
+        nodes.push(BLANK);
         nodes[node].start = left as u32;
         stack.push((left + 1, mid, e));
         stack.push((left, s, mid));

@@ -3,7 +3,7 @@
 //!
 //! | item | what it is |
 //! |---|---|
-//! | [`Bvh`], [`Aabb`], [`BuildStrategy`] | the box tree over a mesh's triangles (binned SAH or median split), exact `f64` boxes |
+//! | [`Bvh`], [`Aabb`], [`BuildStrategy`] | the box tree over a mesh's triangles (binned SAH, median split, or Morton order for a one-shot build), exact `f64` boxes |
 //! | `pose_tree` | the same tree laid out for queries under poses (centre and half-extents per node, vertices in leaf order) |
 //! | `oriented_boxes` | boxes fitted to each node's geometry, with a proved lower bound on the distance of two of them under a relative pose |
 //! | `pose_bounds` | a rigid pose analysed once: its rounded matrix and the proved bounds on the rounding of `pose * v` |
