@@ -4,7 +4,7 @@ The names are those of the Rust module ``cga_collide::motion``. Every point move
 ``p(t) = (1 - t) * p0 + t * p1`` for ``t`` in ``[0, 1]``; the float64 inputs are taken as the
 exact numbers they denote, and touching counts.
 
-* A moving point is a ``(2, 3)`` float64 array (start, end); a moving triangle ``(3, 2, 3)``
+* A moving point is a ``(2, 3)`` array (start, end); a moving triangle ``(3, 2, 3)``
   (each corner's start and end); a moving edge ``(2, 2, 3)``.
 * :func:`vertex_face_touch` and :func:`edge_edge_touch`: do they touch for some ``t``, exactly.
 * :func:`vertex_face_first_contact` and :func:`edge_edge_first_contact`: when first, a
@@ -18,8 +18,9 @@ exact numbers they denote, and touching counts.
 * ``Collider.contacts_during(poses, other, other_poses, tolerance)``: two colliders each moving
   between two ``(4, 4)`` poses (``(2, 4, 4)`` arrays), a :class:`MotionContacts`.
 
-Wrong dtypes are ``TypeError``; wrong shapes, non-finite coordinates and refused poses are
-:class:`cga_collide.CgaError` with the library's message.
+Arrays are read as in :mod:`cga_collide` (anything numpy reads as numbers float64 holds
+exactly). Other numbers, wrong shapes, non-finite coordinates, refused poses and tolerances
+that are NaN or negative are :class:`cga_collide.CgaError` naming the argument.
 """
 
 from ._native import (

@@ -2,26 +2,27 @@
 
 use std::sync::Arc;
 
-use cga_collide::collider::{Collider as RsCollider, Mode};
-use cga_collide::nalgebra::Point3;
-use cga_collide::query::{CertifiedDistance, ContactGeometry};
-use cga_collide::{Ball, Segment, Sphere, TriMesh, Triangle};
-use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods};
+use cga_collide::collider::{Collider as RsCollider, Mode, PosePair};
+use cga_collide::nalgebra::{Isometry3, Point3};
+use cga_collide::{Ball, Error, Segment, Sphere, TriMesh, Triangle};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray2};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyTuple};
 
-use crate::convert::{self, err, value_error};
+use crate::answers::{contact_tuples, exact_distance_tuple};
+use crate::convert::{self, bools, err, value_error, Arg, Bools, Indices, Pairs};
+use crate::distance::{distance_batch, Distance, DistanceBatch};
 
 /// A triangle mesh built once (its box tree and the layout the pose queries read), and every
 /// question about it.
 ///
-/// Build it from numpy arrays, ``Collider(vertices, faces)`` with vertices ``(n, 3)`` float64 and
+/// Build it from arrays, ``Collider(vertices, faces)`` with vertices ``(n, 3)`` numbers and
 /// faces ``(m, 3)`` integers, or from a file with ``Collider.load(path)`` (.obj, .off, .ply, .stl,
 /// optionally .gz).
 ///
 /// Every question comes in the crate's three forms: in one frame ``a.x(b)``; under poses
-/// ``a.x_at(pose_a, b, pose_b)`` with ``(4, 4)`` float64 homogeneous matrices; and many poses
+/// ``a.x_at(pose_a, b, pose_b)`` with ``(4, 4)`` homogeneous matrices; and many poses
 /// at once ``a.x_batch(b, poses_a, poses_b)`` with ``(k, 4, 4)`` arrays (either may be one
 /// ``(4, 4)`` pose used for every query), answered in one call with numpy arrays back. Yes/no
 /// answers are exact: touching counts as colliding, with no tolerance anywhere.
@@ -41,9 +42,7 @@ fn mode_of(mode: &str) -> PyResult<Mode> {
     match mode {
         "bvh" => Ok(Mode::Bvh),
         "brute" => Ok(Mode::Brute),
-        other => Err(value_error(format!(
-            "mode: expected \"bvh\" or \"brute\", got {other:?}"
-        ))),
+        other => Err(value_error(format!("mode: expected \"bvh\" or \"brute\", got {other:?}"))),
     }
 }
 
@@ -54,196 +53,80 @@ fn mode_name(mode: Mode) -> &'static str {
     }
 }
 
-/// A certified distance between two meshes: ``distance`` is within ``error_bound`` of the true
-/// minimum distance between the surfaces; ``witness_a`` and ``witness_b`` are points on each
-/// surface (world coordinates) whose distance is ``distance``; ``triangles`` is the pair of
-/// triangle indices they lie on (``None`` when not known).
-#[pyclass(frozen, module = "cga_collide")]
-#[derive(Clone)]
-pub struct Distance {
-    /// The distance found (an upper bound, at most ``error_bound`` above the true distance).
-    #[pyo3(get)]
-    pub distance: f64,
-    /// The proved bound on ``|distance − true distance|``.
-    #[pyo3(get)]
-    pub error_bound: f64,
-    wa: [f64; 3],
-    wb: [f64; 3],
-    /// The triangle pair of the witnesses, or ``None``.
-    #[pyo3(get)]
-    pub triangles: Option<(u32, u32)>,
-}
-
-impl From<&CertifiedDistance> for Distance {
-    fn from(d: &CertifiedDistance) -> Self {
-        Distance {
-            distance: d.distance,
-            error_bound: d.error_bound,
-            wa: [d.witness_a.x, d.witness_a.y, d.witness_a.z],
-            wb: [d.witness_b.x, d.witness_b.y, d.witness_b.z],
-            triangles: d.triangles,
-        }
-    }
-}
-
-#[pymethods]
-impl Distance {
-    /// The witness point on the first mesh, a ``(3,)`` float64 array.
-    #[getter]
-    fn witness_a<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.wa)
-    }
-
-    /// The witness point on the second mesh, a ``(3,)`` float64 array.
-    #[getter]
-    fn witness_b<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_slice(py, &self.wb)
-    }
-
-    fn __float__(&self) -> f64 {
-        self.distance
-    }
-
-    fn __repr__(&self) -> String {
-        let triangles = match self.triangles {
-            Some((i, j)) => format!("({i}, {j})"),
-            None => "None".to_owned(),
-        };
-        format!(
-            "Distance(distance={:?}, error_bound={:?}, witness_a={:?}, witness_b={:?}, triangles={triangles})",
-            self.distance, self.error_bound, self.wa, self.wb
-        )
-    }
-}
-
-/// The certified distances of a batch, as arrays: ``distance`` and ``error_bound`` ``(k,)``,
-/// ``witness_a`` and ``witness_b`` ``(k, 3)``, ``triangles`` ``(k, 2)`` int64 (``-1`` where not
-/// known).
-#[pyclass(frozen, module = "cga_collide")]
-pub struct DistanceBatch {
-    /// ``(k,)`` float64.
-    #[pyo3(get)]
-    distance: Py<PyArray1<f64>>,
-    /// ``(k,)`` float64.
-    #[pyo3(get)]
-    error_bound: Py<PyArray1<f64>>,
-    /// ``(k, 3)`` float64.
-    #[pyo3(get)]
-    witness_a: Py<PyArray2<f64>>,
-    /// ``(k, 3)`` float64.
-    #[pyo3(get)]
-    witness_b: Py<PyArray2<f64>>,
-    /// ``(k, 2)`` int64, ``-1`` where not known.
-    #[pyo3(get)]
-    triangles: Py<PyArray2<i64>>,
-}
-
-#[pymethods]
-impl DistanceBatch {
-    fn __len__(&self, py: Python<'_>) -> usize {
-        self.distance.bind(py).len().unwrap_or(0)
-    }
-
-    fn __repr__(&self, py: Python<'_>) -> String {
-        format!("DistanceBatch(k={})", self.__len__(py))
-    }
-}
-
-fn distance_batch(py: Python<'_>, ds: &[CertifiedDistance]) -> DistanceBatch {
-    let k = ds.len();
-    let mut wa = Array2::<f64>::zeros((k, 3));
-    let mut wb = Array2::<f64>::zeros((k, 3));
-    let mut tr = Array2::<i64>::from_elem((k, 2), -1);
-    for (i, d) in ds.iter().enumerate() {
-        for c in 0..3 {
-            wa[[i, c]] = d.witness_a[c];
-            wb[[i, c]] = d.witness_b[c];
-        }
-        if let Some((x, y)) = d.triangles {
-            tr[[i, 0]] = i64::from(x);
-            tr[[i, 1]] = i64::from(y);
-        }
-    }
-    DistanceBatch {
-        distance: Array1::from_iter(ds.iter().map(|d| d.distance))
-            .into_pyarray(py)
-            .unbind(),
-        error_bound: Array1::from_iter(ds.iter().map(|d| d.error_bound))
-            .into_pyarray(py)
-            .unbind(),
-        witness_a: wa.into_pyarray(py).unbind(),
-        witness_b: wb.into_pyarray(py).unbind(),
-        triangles: tr.into_pyarray(py).unbind(),
-    }
-}
-
-/// One contact of [`Collider::contacts`]: the triangle pair, the kind of intersection and its
-/// corners (nearest float64 values of the exact rationals).
-fn contact_tuple<'py>(
-    py: Python<'py>,
-    (i, j): (u32, u32),
-    g: &ContactGeometry,
-) -> PyResult<Bound<'py, PyTuple>> {
-    let kind = match g {
-        ContactGeometry::Point(_) => "point",
-        ContactGeometry::Segment(..) => "segment",
-        ContactGeometry::Polygon(_) => "polygon",
-    };
-    let pts = g.points_f64();
-    let mut a = Array2::<f64>::zeros((pts.len(), 3));
-    for (k, p) in pts.iter().enumerate() {
-        for c in 0..3 {
-            a[[k, c]] = p[c];
-        }
-    }
-    PyTuple::new(
-        py,
-        [
-            (i, j).into_pyobject(py)?.into_any(),
-            kind.into_pyobject(py)?.into_any(),
-            a.into_pyarray(py).into_any(),
-        ],
-    )
-}
-
-fn bools<'py>(py: Python<'py>, v: Vec<bool>) -> Bound<'py, PyArray1<bool>> {
-    Array1::from_vec(v).into_pyarray(py)
-}
-
 fn segment(p: &Bound<'_, PyAny>, q: &Bound<'_, PyAny>) -> PyResult<Segment> {
     Segment::new(convert::point(p, "p")?, convert::point(q, "q")?).map_err(err)
 }
 
 fn triangle(t: &Bound<'_, PyAny>) -> PyResult<Triangle> {
-    let a = convert::f64_array(t, "triangle")?;
-    let r = a.readonly();
-    let v = r.as_array();
-    convert::check_shape(v.shape(), &[Some(3), Some(3)], "triangle")?;
-    let p = |i: usize| Point3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]);
-    Triangle::new(p(0), p(1), p(2)).map_err(err)
+    let name = "triangle_corners";
+    let [a, b, c] = convert::read(t, name, &[Some(3), Some(3)], |v| {
+        Ok([0, 1, 2].map(|i| Point3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]])))
+    })?;
+    Triangle::new(a, b, c).map_err(err)
 }
 
+/// The questions of the Python methods, each asked through one of these with the GIL
+/// released: the poses read (and refused with the argument's name) in one place.
 impl Collider {
     fn new_from(mesh: TriMesh, mode: Mode) -> Collider {
-        Collider {
-            inner: Arc::new(RsCollider::new(mesh).with_mode(mode)),
-        }
+        Collider { inner: Arc::new(RsCollider::new(mesh).with_mode(mode)) }
+    }
+
+    /// A question about this mesh alone, in its own frame.
+    fn alone<T: Send>(&self, py: Python<'_>, q: impl FnOnce(&RsCollider) -> T + Send) -> T {
+        let a = &*self.inner;
+        py.detach(|| q(a))
+    }
+
+    /// A question about this mesh placed at `pose`.
+    fn placed<T: Send>(
+        &self, py: Python<'_>, pose: &Arg,
+        q: impl FnOnce(&RsCollider, &Isometry3<f64>) -> Result<T, Error> + Send,
+    ) -> PyResult<T> {
+        let pose = convert::pose(pose, "pose")?;
+        self.alone(py, |a| q(a, &pose)).map_err(err)
+    }
+
+    /// A question about `self` and `other` in one frame.
+    fn with<T: Send>(
+        &self, py: Python<'_>, other: &Collider,
+        q: impl FnOnce(&RsCollider, &RsCollider) -> T + Send,
+    ) -> T {
+        let (a, b) = (&*self.inner, &*other.inner);
+        py.detach(|| q(a, b))
+    }
+
+    /// A question with `self` at `pose_a` and `other` at `pose_b`.
+    fn at<T: Send>(
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
+        q: impl FnOnce(&RsCollider, &Isometry3<f64>, &RsCollider, &Isometry3<f64>) -> Result<T, Error>
+            + Send,
+    ) -> PyResult<T> {
+        let pa = convert::pose(pose_a, "pose_a")?;
+        let pb = convert::pose(pose_b, "pose_b")?;
+        self.with(py, other, |a, b| q(a, &pa, b, &pb)).map_err(err)
+    }
+
+    /// A question for every pose pair of `poses_a` and `poses_b`.
+    fn batch<T: Send>(
+        &self, py: Python<'_>, other: &Collider, poses_a: &Arg, poses_b: &Arg,
+        q: impl FnOnce(&RsCollider, &RsCollider, &[PosePair]) -> Result<T, Error> + Send,
+    ) -> PyResult<T> {
+        let poses = convert::pose_pairs(poses_a, poses_b)?;
+        self.with(py, other, |a, b| q(a, b, &poses)).map_err(err)
     }
 }
 
 #[pymethods]
 impl Collider {
-    /// Builds a collider from ``vertices`` (``(n, 3)`` float64) and ``faces`` (``(m, 3)``
-    /// integers, 0-based). Raises ``TypeError`` for another dtype and ``CgaError`` (a
-    /// ``ValueError``) for a wrong shape, a non-finite coordinate, an index out of range or an
-    /// empty mesh, naming the vertex or face.
+    /// Builds a collider from ``vertices`` (``(n, 3)`` numbers) and ``faces`` (``(m, 3)``
+    /// integers, 0-based). Raises ``CgaError`` (a ``ValueError``) for numbers float64 does not
+    /// hold exactly, a wrong shape, a non-finite coordinate, an index out of range or an empty
+    /// mesh, naming the argument, vertex or face.
     #[new]
     #[pyo3(signature = (vertices, faces, mode = "bvh"))]
     fn py_new(
-        py: Python<'_>,
-        vertices: &Bound<'_, PyAny>,
-        faces: &Bound<'_, PyAny>,
-        mode: &str,
+        py: Python<'_>, vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>, mode: &str,
     ) -> PyResult<Collider> {
         let mode = mode_of(mode)?;
         let v = convert::vertices(vertices)?;
@@ -266,7 +149,7 @@ impl Collider {
         })
     }
 
-    /// An axis-aligned box from corner ``lo`` to corner ``hi`` (``(3,)`` float64 each).
+    /// An axis-aligned box from corner ``lo`` to corner ``hi`` (``(3,)`` each).
     #[staticmethod]
     #[pyo3(signature = (lo, hi, mode = "bvh"))]
     fn cuboid(lo: &Bound<'_, PyAny>, hi: &Bound<'_, PyAny>, mode: &str) -> PyResult<Collider> {
@@ -278,9 +161,7 @@ impl Collider {
 
     /// The same mesh and trees with another mode (``"bvh"`` or ``"brute"``).
     fn with_mode(&self, mode: &str) -> PyResult<Collider> {
-        Ok(Collider {
-            inner: Arc::new((*self.inner).clone().with_mode(mode_of(mode)?)),
-        })
+        Ok(Collider { inner: Arc::new((*self.inner).clone().with_mode(mode_of(mode)?)) })
     }
 
     /// ``"bvh"`` or ``"brute"``.
@@ -367,39 +248,23 @@ impl Collider {
 
     /// Whether the two surfaces touch (in one frame), exactly.
     fn collides(&self, py: Python<'_>, other: &Collider) -> bool {
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.collides(b))
+        self.with(py, other, RsCollider::collides)
     }
 
     /// Whether the surfaces touch with ``self`` at ``pose_a`` and ``other`` at ``pose_b``
-    /// (``(4, 4)`` float64 homogeneous rigid motions).
+    /// (``(4, 4)`` homogeneous rigid motions).
     fn collides_at(
-        &self,
-        py: Python<'_>,
-        pose_a: &Bound<'_, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
     ) -> PyResult<bool> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.collides_at(&pa, b, &pb)).map_err(err)
+        self.at(py, pose_a, other, pose_b, RsCollider::collides_at)
     }
 
     /// ``collides_at`` for every pose pair: ``poses_a`` and ``poses_b`` are ``(k, 4, 4)``
-    /// float64 (either may be one ``(4, 4)`` pose); returns a ``(k,)`` bool array.
+    /// (either may be one ``(4, 4)`` pose); returns a ``(k,)`` bool array.
     fn collides_batch<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-        poses_a: &Bound<'py, PyAny>,
-        poses_b: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<bool>>> {
-        let poses = convert::pose_pairs(poses_a, poses_b)?;
-        let (a, b) = (&self.inner, &other.inner);
-        let hits = py.detach(|| a.collides_batch(b, &poses)).map_err(err)?;
+        &self, py: Python<'py>, other: &Collider, poses_a: &Arg, poses_b: &Arg,
+    ) -> PyResult<Bools<'py>> {
+        let hits = self.batch(py, other, poses_a, poses_b, RsCollider::collides_batch)?;
         Ok(bools(py, hits))
     }
 
@@ -407,48 +272,23 @@ impl Collider {
 
     /// Every intersecting triangle pair ``(i, j)`` (``i`` in ``self``, ``j`` in ``other``),
     /// sorted, as a ``(p, 2)`` int64 array.
-    fn intersecting_pairs<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-    ) -> Bound<'py, PyArray2<i64>> {
-        let (a, b) = (&self.inner, &other.inner);
-        let p = py.detach(|| a.intersecting_pairs(b));
-        convert::pairs(py, &p)
+    fn intersecting_pairs<'py>(&self, py: Python<'py>, other: &Collider) -> Pairs<'py> {
+        convert::pairs(py, &self.with(py, other, RsCollider::intersecting_pairs))
     }
 
     /// ``intersecting_pairs`` under poses.
     fn intersecting_pairs_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose_a: &Bound<'py, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray2<i64>>> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        let p = py
-            .detach(|| a.intersecting_pairs_at(&pa, b, &pb))
-            .map_err(err)?;
+        &self, py: Python<'py>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
+    ) -> PyResult<Pairs<'py>> {
+        let p = self.at(py, pose_a, other, pose_b, RsCollider::intersecting_pairs_at)?;
         Ok(convert::pairs(py, &p))
     }
 
     /// ``intersecting_pairs_at`` for every pose pair: a list of ``(p, 2)`` int64 arrays.
     fn intersecting_pairs_batch<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-        poses_a: &Bound<'py, PyAny>,
-        poses_b: &Bound<'py, PyAny>,
-    ) -> PyResult<Vec<Bound<'py, PyArray2<i64>>>> {
-        let poses = convert::pose_pairs(poses_a, poses_b)?;
-        let (a, b) = (&self.inner, &other.inner);
-        let all = py
-            .detach(|| a.intersecting_pairs_batch(b, &poses))
-            .map_err(err)?;
+        &self, py: Python<'py>, other: &Collider, poses_a: &Arg, poses_b: &Arg,
+    ) -> PyResult<Vec<Pairs<'py>>> {
+        let all = self.batch(py, other, poses_a, poses_b, RsCollider::intersecting_pairs_batch)?;
         Ok(all.iter().map(|p| convert::pairs(py, p)).collect())
     }
 
@@ -456,204 +296,111 @@ impl Collider {
 
     /// Whether the closed solids share a point (one may be inside the other), in one frame.
     fn collides_solid(&self, py: Python<'_>, other: &Collider) -> bool {
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.collides_solid(b))
+        self.with(py, other, RsCollider::collides_solid)
     }
 
     /// ``collides_solid`` under poses.
     fn collides_solid_at(
-        &self,
-        py: Python<'_>,
-        pose_a: &Bound<'_, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
     ) -> PyResult<bool> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.collides_solid_at(&pa, b, &pb)).map_err(err)
+        self.at(py, pose_a, other, pose_b, RsCollider::collides_solid_at)
     }
 
     /// ``collides_solid_at`` for every pose pair: a ``(k,)`` bool array.
     fn collides_solid_batch<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-        poses_a: &Bound<'py, PyAny>,
-        poses_b: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<bool>>> {
-        let poses = convert::pose_pairs(poses_a, poses_b)?;
-        let (a, b) = (&self.inner, &other.inner);
-        let hits = py
-            .detach(|| a.collides_solid_batch(b, &poses))
-            .map_err(err)?;
+        &self, py: Python<'py>, other: &Collider, poses_a: &Arg, poses_b: &Arg,
+    ) -> PyResult<Bools<'py>> {
+        let hits = self.batch(py, other, poses_a, poses_b, RsCollider::collides_solid_batch)?;
         Ok(bools(py, hits))
     }
 
-    /// Whether the point ``p`` (``(3,)`` float64) is in the closed solid (on the surface
+    /// Whether the point ``p`` (``(3,)``, finite) is in the closed solid (on the surface
     /// counts). The mesh should be closed.
-    fn contains_point(&self, py: Python<'_>, p: &Bound<'_, PyAny>) -> PyResult<bool> {
+    fn contains_point(&self, py: Python<'_>, p: &Arg) -> PyResult<bool> {
         let p = convert::point(p, "p")?;
-        let a = &self.inner;
-        Ok(py.detach(|| a.contains_point(&p)))
+        Ok(self.alone(py, |a| a.contains_point(&p)))
     }
 
     /// ``contains_point`` with the mesh at ``pose`` and ``p`` in world coordinates.
-    fn contains_point_at(
-        &self,
-        py: Python<'_>,
-        pose: &Bound<'_, PyAny>,
-        p: &Bound<'_, PyAny>,
-    ) -> PyResult<bool> {
-        let pose = convert::pose(pose, "pose")?;
+    fn contains_point_at(&self, py: Python<'_>, pose: &Arg, p: &Arg) -> PyResult<bool> {
         let p = convert::point(p, "p")?;
-        let a = &self.inner;
-        py.detach(|| a.contains_point_at(&pose, &p)).map_err(err)
+        self.placed(py, pose, |a, pose| a.contains_point_at(pose, &p))
     }
 
     // ------------------------------------------------------------------ distances
 
     /// Whether the surfaces come within distance ``c`` (closed: exactly ``c`` counts), exactly.
-    fn within_distance(&self, py: Python<'_>, other: &Collider, c: f64) -> bool {
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.within_distance(b, c))
+    fn within_distance(&self, py: Python<'_>, other: &Collider, c: f64) -> PyResult<bool> {
+        let c = convert::distance_bound(c, "c")?;
+        Ok(self.with(py, other, |a, b| a.within_distance(b, c)))
     }
 
     /// ``within_distance`` under poses.
     fn within_distance_at(
-        &self,
-        py: Python<'_>,
-        pose_a: &Bound<'_, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'_, PyAny>,
-        c: f64,
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg, c: f64,
     ) -> PyResult<bool> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.within_distance_at(&pa, b, &pb, c))
-            .map_err(err)
+        let c = convert::distance_bound(c, "c")?;
+        self.at(py, pose_a, other, pose_b, |a, pa, b, pb| a.within_distance_at(pa, b, pb, c))
     }
 
     /// ``within_distance_at`` for every pose pair: a ``(k,)`` bool array.
     fn within_distance_batch<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-        poses_a: &Bound<'py, PyAny>,
-        poses_b: &Bound<'py, PyAny>,
-        c: f64,
-    ) -> PyResult<Bound<'py, PyArray1<bool>>> {
-        let poses = convert::pose_pairs(poses_a, poses_b)?;
-        let (a, b) = (&self.inner, &other.inner);
-        let hits = py
-            .detach(|| a.within_distance_batch(b, &poses, c))
-            .map_err(err)?;
+        &self, py: Python<'py>, other: &Collider, poses_a: &Arg, poses_b: &Arg, c: f64,
+    ) -> PyResult<Bools<'py>> {
+        let c = convert::distance_bound(c, "c")?;
+        let hits =
+            self.batch(py, other, poses_a, poses_b, |a, b, p| a.within_distance_batch(b, p, c))?;
         Ok(bools(py, hits))
     }
 
     /// Every triangle pair whose triangles come within ``c``, sorted, ``(p, 2)`` int64.
     fn pairs_within_distance<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
-        c: f64,
-    ) -> Bound<'py, PyArray2<i64>> {
-        let (a, b) = (&self.inner, &other.inner);
-        let p = py.detach(|| a.pairs_within_distance(b, c));
-        convert::pairs(py, &p)
+        &self, py: Python<'py>, other: &Collider, c: f64,
+    ) -> PyResult<Pairs<'py>> {
+        let c = convert::distance_bound(c, "c")?;
+        Ok(convert::pairs(py, &self.with(py, other, |a, b| a.pairs_within_distance(b, c))))
     }
 
     /// ``pairs_within_distance`` under poses.
     fn pairs_within_distance_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose_a: &Bound<'py, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'py, PyAny>,
-        c: f64,
-    ) -> PyResult<Bound<'py, PyArray2<i64>>> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        let p = py
-            .detach(|| a.pairs_within_distance_at(&pa, b, &pb, c))
-            .map_err(err)?;
+        &self, py: Python<'py>, pose_a: &Arg, other: &Collider, pose_b: &Arg, c: f64,
+    ) -> PyResult<Pairs<'py>> {
+        let c = convert::distance_bound(c, "c")?;
+        let p = self.at(py, pose_a, other, pose_b, |a, pa, b, pb| {
+            a.pairs_within_distance_at(pa, b, pb, c)
+        })?;
         Ok(convert::pairs(py, &p))
     }
 
     /// The certified minimum distance between the surfaces (a ``Distance``), in one frame.
     fn distance(&self, py: Python<'_>, other: &Collider) -> PyResult<Distance> {
-        let (a, b) = (&self.inner, &other.inner);
-        let d = py.detach(|| a.distance(b)).map_err(err)?;
+        let d = self.with(py, other, RsCollider::distance).map_err(err)?;
         Ok(Distance::from(&d))
     }
 
     /// ``distance`` under poses (witnesses in world coordinates).
     fn distance_at(
-        &self,
-        py: Python<'_>,
-        pose_a: &Bound<'_, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
     ) -> PyResult<Distance> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        let d = py.detach(|| a.distance_at(&pa, b, &pb)).map_err(err)?;
+        let d = self.at(py, pose_a, other, pose_b, RsCollider::distance_at)?;
         Ok(Distance::from(&d))
     }
 
     /// ``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays.
     fn distance_batch(
-        &self,
-        py: Python<'_>,
-        other: &Collider,
-        poses_a: &Bound<'_, PyAny>,
-        poses_b: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, other: &Collider, poses_a: &Arg, poses_b: &Arg,
     ) -> PyResult<DistanceBatch> {
-        let poses = convert::pose_pairs(poses_a, poses_b)?;
-        let (a, b) = (&self.inner, &other.inner);
-        let ds = py.detach(|| a.distance_batch(b, &poses)).map_err(err)?;
+        let ds = self.batch(py, other, poses_a, poses_b, RsCollider::distance_batch)?;
         Ok(distance_batch(py, &ds))
     }
 
     /// The exact minimum distance: ``(distance2, witness_a, witness_b, triangles)`` with the
     /// squared distance and the witnesses' coordinates as ``fractions.Fraction``.
     fn exact_distance<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
+        &self, py: Python<'py>, other: &Collider,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let (a, b) = (&self.inner, &other.inner);
-        let d = py.detach(|| a.exact_distance(b)).map_err(err)?;
-        let fraction = py.import("fractions")?.getattr("Fraction")?;
-        let q = |x: &cga_collide::ga_core::scalar::Rational| -> PyResult<Bound<'py, PyAny>> {
-            fraction
-                .call1((x.numer().to_string(),))?
-                .call_method1("__truediv__", (fraction.call1((x.denom().to_string(),))?,))
-        };
-        let point =
-            |p: &[cga_collide::ga_core::scalar::Rational; 3]| -> PyResult<Bound<'py, PyTuple>> {
-                PyTuple::new(py, [q(&p[0])?, q(&p[1])?, q(&p[2])?])
-            };
-        PyTuple::new(
-            py,
-            [
-                q(&d.distance2)?,
-                point(&d.witness_a)?.into_any(),
-                point(&d.witness_b)?.into_any(),
-                d.triangles.into_pyobject(py)?.into_any(),
-            ],
-        )
+        let d = self.with(py, other, RsCollider::exact_distance).map_err(err)?;
+        exact_distance_tuple(py, &d)
     }
 
     // ------------------------------------------------------------------ contacts
@@ -661,74 +408,43 @@ impl Collider {
     /// How two closed meshes touch: ``"disjoint"``, ``"touching"``, ``"penetrating"``,
     /// ``"a_inside_b"`` or ``"b_inside_a"``.
     fn contact_class(&self, py: Python<'_>, other: &Collider) -> &'static str {
-        let (a, b) = (&self.inner, &other.inner);
-        py.detach(|| a.contact_class(b)).name()
+        self.with(py, other, RsCollider::contact_class).name()
     }
 
     /// ``contact_class`` under poses.
     fn contact_class_at(
-        &self,
-        py: Python<'_>,
-        pose_a: &Bound<'_, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
     ) -> PyResult<&'static str> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        Ok(py
-            .detach(|| a.contact_class_at(&pa, b, &pb))
-            .map_err(err)?
-            .name())
+        Ok(self.at(py, pose_a, other, pose_b, RsCollider::contact_class_at)?.name())
     }
 
     /// Every intersecting triangle pair with its exact intersection: a list of
     /// ``((i, j), kind, points)`` with ``kind`` ``"point"``, ``"segment"`` or ``"polygon"`` and
     /// ``points`` a ``(c, 3)`` float64 array of its corners (nearest values of the exact ones).
     fn contacts<'py>(
-        &self,
-        py: Python<'py>,
-        other: &Collider,
+        &self, py: Python<'py>, other: &Collider,
     ) -> PyResult<Vec<Bound<'py, PyTuple>>> {
-        let (a, b) = (&self.inner, &other.inner);
-        let cs = py.detach(|| a.contacts(b));
-        cs.iter().map(|(ij, g)| contact_tuple(py, *ij, g)).collect()
+        contact_tuples(py, &self.with(py, other, RsCollider::contacts))
     }
 
     /// ``contacts`` under poses (world coordinates).
     fn contacts_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose_a: &Bound<'py, PyAny>,
-        other: &Collider,
-        pose_b: &Bound<'py, PyAny>,
+        &self, py: Python<'py>, pose_a: &Arg, other: &Collider, pose_b: &Arg,
     ) -> PyResult<Vec<Bound<'py, PyTuple>>> {
-        let (pa, pb) = (
-            convert::pose(pose_a, "pose_a")?,
-            convert::pose(pose_b, "pose_b")?,
-        );
-        let (a, b) = (&self.inner, &other.inner);
-        let cs = py.detach(|| a.contacts_at(&pa, b, &pb)).map_err(err)?;
-        cs.iter().map(|(ij, g)| contact_tuple(py, *ij, g)).collect()
+        contact_tuples(py, &self.at(py, pose_a, other, pose_b, RsCollider::contacts_at)?)
     }
 
     // ------------------------------------------------------------------ motion
 
     /// Every vertex–face and edge–edge pair of ``self`` and ``other`` that touches while
     /// ``self`` moves from ``poses[0]`` to ``poses[1]`` and ``other`` from ``other_poses[0]`` to
-    /// ``other_poses[1]`` (``(2, 4, 4)`` float64 arrays; each vertex moves linearly between its
+    /// ``other_poses[1]`` (``(2, 4, 4)`` arrays; each vertex moves linearly between its
     /// two placed positions), exactly, with the first contact time bounded to ``tolerance``.
     /// Returns a ``cga_collide.motion.MotionContacts``; a refused pose raises ``CgaError``.
     #[pyo3(signature = (poses, other, other_poses, tolerance = 1e-9))]
     fn contacts_during(
-        &self,
-        py: Python<'_>,
-        poses: &Bound<'_, PyAny>,
-        other: &Collider,
-        other_poses: &Bound<'_, PyAny>,
-        tolerance: f64,
+        &self, py: Python<'_>, poses: &Bound<'_, PyAny>, other: &Collider,
+        other_poses: &Bound<'_, PyAny>, tolerance: f64,
     ) -> PyResult<crate::motion::MotionContacts> {
         crate::motion::contacts_during(py, &self.inner, poses, &other.inner, other_poses, tolerance)
     }
@@ -736,127 +452,78 @@ impl Collider {
     // ------------------------------------------------------------------ self-intersection
 
     /// Every pair of non-adjacent triangles of the mesh that intersect, ``(p, 2)`` int64.
-    fn self_intersections<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        let a = &self.inner;
-        let p = py.detach(|| a.self_intersections());
-        convert::pairs(py, &p)
+    fn self_intersections<'py>(&self, py: Python<'py>) -> Pairs<'py> {
+        convert::pairs(py, &self.alone(py, RsCollider::self_intersections))
     }
 
     /// Whether the mesh cuts itself.
     fn self_intersects(&self, py: Python<'_>) -> bool {
-        let a = &self.inner;
-        py.detach(|| a.self_intersects())
+        self.alone(py, RsCollider::self_intersects)
     }
 
     // ------------------------------------------------------------------ shapes
 
     /// The triangles the closed segment ``p``–``q`` meets, an int64 array of indices.
-    fn segment_hits<'py>(
-        &self,
-        py: Python<'py>,
-        p: &Bound<'py, PyAny>,
-        q: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
+    fn segment_hits<'py>(&self, py: Python<'py>, p: &Arg, q: &Arg) -> PyResult<Indices<'py>> {
         let s = segment(p, q)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.segment_hits(&s));
-        Ok(convert::indices(py, &hits))
+        Ok(convert::indices(py, &self.alone(py, |a| a.segment_hits(&s))))
     }
 
     /// ``segment_hits`` with the mesh at ``pose`` and the segment in world coordinates.
     fn segment_hits_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose: &Bound<'py, PyAny>,
-        p: &Bound<'py, PyAny>,
-        q: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let pose = convert::pose(pose, "pose")?;
+        &self, py: Python<'py>, pose: &Arg, p: &Arg, q: &Arg,
+    ) -> PyResult<Indices<'py>> {
         let s = segment(p, q)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.segment_hits_at(&pose, &s)).map_err(err)?;
+        let hits = self.placed(py, pose, |a, pose| a.segment_hits_at(pose, &s))?;
         Ok(convert::indices(py, &hits))
     }
 
-    /// The triangles a triangle (``(3, 3)`` float64, one corner per row) meets.
+    /// The triangles a triangle (``(3, 3)``, one corner per row) meets.
     fn triangle_hits<'py>(
-        &self,
-        py: Python<'py>,
-        triangle_corners: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
+        &self, py: Python<'py>, triangle_corners: &Arg,
+    ) -> PyResult<Indices<'py>> {
         let t = triangle(triangle_corners)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.triangle_hits(&t));
-        Ok(convert::indices(py, &hits))
+        Ok(convert::indices(py, &self.alone(py, |a| a.triangle_hits(&t))))
     }
 
     /// ``triangle_hits`` with the mesh at ``pose``.
     fn triangle_hits_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose: &Bound<'py, PyAny>,
-        triangle_corners: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let pose = convert::pose(pose, "pose")?;
+        &self, py: Python<'py>, pose: &Arg, triangle_corners: &Arg,
+    ) -> PyResult<Indices<'py>> {
         let t = triangle(triangle_corners)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.triangle_hits_at(&pose, &t)).map_err(err)?;
+        let hits = self.placed(py, pose, |a, pose| a.triangle_hits_at(pose, &t))?;
         Ok(convert::indices(py, &hits))
     }
 
     /// The triangles the sphere surface (``centre`` ``(3,)``, ``radius``) meets.
     fn sphere_hits<'py>(
-        &self,
-        py: Python<'py>,
-        centre: &Bound<'py, PyAny>,
-        radius: f64,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
+        &self, py: Python<'py>, centre: &Arg, radius: f64,
+    ) -> PyResult<Indices<'py>> {
         let s = Sphere::new(convert::point(centre, "centre")?, radius).map_err(err)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.sphere_hits(&s));
-        Ok(convert::indices(py, &hits))
+        Ok(convert::indices(py, &self.alone(py, |a| a.sphere_hits(&s))))
     }
 
     /// ``sphere_hits`` with the mesh at ``pose``.
     fn sphere_hits_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose: &Bound<'py, PyAny>,
-        centre: &Bound<'py, PyAny>,
-        radius: f64,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let pose = convert::pose(pose, "pose")?;
+        &self, py: Python<'py>, pose: &Arg, centre: &Arg, radius: f64,
+    ) -> PyResult<Indices<'py>> {
         let s = Sphere::new(convert::point(centre, "centre")?, radius).map_err(err)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.sphere_hits_at(&pose, &s)).map_err(err)?;
+        let hits = self.placed(py, pose, |a, pose| a.sphere_hits_at(pose, &s))?;
         Ok(convert::indices(py, &hits))
     }
 
     /// The triangles the solid ball (``centre`` ``(3,)``, ``radius``) meets.
-    fn ball_hits<'py>(
-        &self,
-        py: Python<'py>,
-        centre: &Bound<'py, PyAny>,
-        radius: f64,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
+    fn ball_hits<'py>(&self, py: Python<'py>, centre: &Arg, radius: f64) -> PyResult<Indices<'py>> {
         let s = Ball::new(convert::point(centre, "centre")?, radius).map_err(err)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.ball_hits(&s));
-        Ok(convert::indices(py, &hits))
+        Ok(convert::indices(py, &self.alone(py, |a| a.ball_hits(&s))))
     }
 
     /// ``ball_hits`` with the mesh at ``pose``.
     fn ball_hits_at<'py>(
-        &self,
-        py: Python<'py>,
-        pose: &Bound<'py, PyAny>,
-        centre: &Bound<'py, PyAny>,
-        radius: f64,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let pose = convert::pose(pose, "pose")?;
+        &self, py: Python<'py>, pose: &Arg, centre: &Arg, radius: f64,
+    ) -> PyResult<Indices<'py>> {
         let s = Ball::new(convert::point(centre, "centre")?, radius).map_err(err)?;
-        let a = &self.inner;
-        let hits = py.detach(|| a.ball_hits_at(&pose, &s)).map_err(err)?;
+        let hits = self.placed(py, pose, |a, pose| a.ball_hits_at(pose, &s))?;
         Ok(convert::indices(py, &hits))
     }
 }

@@ -1,26 +1,45 @@
 //! Python bindings of `cga-collide`: the extension module `cga_collide._native`, re-exported by
 //! the Python package `cga_collide` (see `cga_collide/__init__.py` and the `.pyi` stubs).
 //!
-//! Arrays come in and go out as numpy arrays; dtypes and shapes are checked, never cast
-//! silently; every library error becomes a `CgaError` (a `ValueError`) with the library's
-//! message; the GIL is released while Rust works.
+//! Arrays come in as anything numpy reads as numbers that float64 holds exactly (never a
+//! rounding cast) and go out as numpy arrays; shapes are checked; every refused input and
+//! every library error is a `CgaError` (a `ValueError`) naming the argument; the GIL is
+//! released while Rust works.
 
+mod answers;
 mod collider;
 mod convert;
+mod distance;
 mod motion;
 mod scene;
 
+use numpy::PyArray2;
 use pyo3::prelude::*;
+
+/// The ``(4, 4)`` float64 pose that rotates by ``degrees[0]`` about the x axis, then by
+/// ``degrees[1]`` about the y axis, then by ``degrees[2]`` about the z axis (fixed axes,
+/// right-handed, counter-clockwise looking down the axis), then translates by ``translation``
+/// (``None`` for none): ``x -> Rz Ry Rx x + t``. The convention of the ``cga`` command line's
+/// ``--rotate`` and ``--translate`` and of the Rust ``pose_from_degrees``, so a pose written
+/// for one is the same pose in the other.
+#[pyfunction]
+#[pyo3(signature = (degrees, translation = None))]
+fn pose_from_degrees<'py>(
+    py: Python<'py>, degrees: &convert::Arg<'_>, translation: Option<&convert::Arg<'_>>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    Ok(convert::matrix(py, &convert::degrees_pose(degrees, translation)?))
+}
 
 /// Exact collision detection: colliders, scenes, numpy in and out.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<collider::Collider>()?;
-    m.add_class::<collider::Distance>()?;
-    m.add_class::<collider::DistanceBatch>()?;
+    m.add_class::<distance::Distance>()?;
+    m.add_class::<distance::DistanceBatch>()?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
     motion::register(m)?;
+    m.add_function(wrap_pyfunction!(pose_from_degrees, m)?)?;
     m.add("CgaError", m.py().get_type::<convert::CgaError>())?;
     m.add("ROTATION_TOLERANCE", convert::ROTATION_TOLERANCE)?;
     Ok(())

@@ -1,7 +1,7 @@
 //! `cga_collide.motion`: continuous collision, with the names of the Rust `motion` module.
 //!
 //! Every point moves linearly from its start (`t = 0`) to its end (`t = 1`). A moving point is a
-//! `(2, 3)` float64 array (start, end), a moving triangle `(3, 2, 3)`, a moving edge `(2, 2, 3)`;
+//! `(2, 3)` array (start, end), a moving triangle `(3, 2, 3)`, a moving edge `(2, 2, 3)`;
 //! batches are `(k, 4, 2, 3)` arrays (the four moving points of each query), answered in one
 //! call over the cores.
 
@@ -10,12 +10,12 @@ use cga_collide::motion::{self, ContactTime as RsContactTime, MotionPair, Moving
 use cga_collide::nalgebra::Point3;
 use cga_collide::{Error, TriMesh};
 use numpy::ndarray::{Array2, Array3, ArrayView2};
-use numpy::{IntoPyArray, PyArray2, PyArray3, PyArrayMethods};
+use numpy::{IntoPyArray, PyArray2, PyArray3};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use rayon::prelude::*;
 
-use crate::convert::{self, err, value_error};
+use crate::convert::{self, bools, err, value_error, Arg, Bools};
 
 /// When two primitives first touch: ``lo <= t <= hi`` for the earliest contact time ``t`` in
 /// ``[0, 1]``. Either ``lo == hi == t`` exactly (``is_exact``), or ``lo < t <= hi``, so ``lo``
@@ -59,11 +59,7 @@ impl ContactTime {
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "ContactTime(lo={:?}, hi={:?})",
-            self.inner.lo(),
-            self.inner.hi()
-        )
+        format!("ContactTime(lo={:?}, hi={:?})", self.inner.lo(), self.inner.hi())
     }
 }
 
@@ -79,67 +75,58 @@ fn moving_points(v: &ArrayView2<'_, f64>, row: usize) -> MovingPoint {
     MovingPoint::new(p(2 * row), p(2 * row + 1))
 }
 
-/// `count` moving points from a `shape` float64 array, flattened to rows of `(start, end)`.
+/// The moving points of an array of `shape` (ending in `(2, 3)`), read as rows of
+/// `(start, end)`.
 fn read_points(
-    obj: &Bound<'_, PyAny>,
-    name: &str,
-    shape: &[Option<usize>],
-    count: usize,
+    obj: &Bound<'_, PyAny>, name: &str, shape: &[Option<usize>],
 ) -> PyResult<Vec<MovingPoint>> {
-    let a = convert::f64_array(obj, name)?;
-    let r = a.readonly();
-    let v = r.as_array();
-    convert::check_shape(v.shape(), shape, name)?;
-    let flat: Vec<f64> = v.iter().copied().collect();
-    let rows = ArrayView2::from_shape((2 * count, 3), &flat)
-        .map_err(|e| value_error(format!("{name}: {e}")))?;
-    Ok((0..count).map(|i| moving_points(&rows, i)).collect())
+    convert::read(obj, name, shape, |v| {
+        let flat: Vec<f64> = v.iter().copied().collect();
+        let count = flat.len() / 6;
+        let rows = ArrayView2::from_shape((2 * count, 3), &flat)
+            .map_err(|e| value_error(format!("{name}: {e}")))?;
+        Ok((0..count).map(|i| moving_points(&rows, i)).collect())
+    })
 }
 
 /// A moving vertex: `(2, 3)`.
 fn vertex(obj: &Bound<'_, PyAny>) -> PyResult<MovingPoint> {
-    let p = read_points(obj, "vertex", &[Some(2), Some(3)], 1)?;
+    let p = read_points(obj, "vertex", &[Some(2), Some(3)])?;
     Ok(p[0])
 }
 
 /// A moving triangle: `(3, 2, 3)`.
 fn face(obj: &Bound<'_, PyAny>) -> PyResult<[MovingPoint; 3]> {
-    let p = read_points(obj, "face", &[Some(3), Some(2), Some(3)], 3)?;
+    let p = read_points(obj, "face", &[Some(3), Some(2), Some(3)])?;
     Ok([p[0], p[1], p[2]])
 }
 
 /// A moving edge: `(2, 2, 3)`.
 fn edge(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<[MovingPoint; 2]> {
-    let p = read_points(obj, name, &[Some(2), Some(2), Some(3)], 2)?;
+    let p = read_points(obj, name, &[Some(2), Some(2), Some(3)])?;
     Ok([p[0], p[1]])
 }
 
-/// The queries of a batch: a `(k, 4, 2, 3)` float64 array, four moving points a query.
+/// The queries of a batch: a `(k, 4, 2, 3)` array, four moving points a query.
 fn batch(obj: &Bound<'_, PyAny>) -> PyResult<Vec<[MovingPoint; 4]>> {
-    let a = convert::f64_array(obj, "points")?;
-    let r = a.readonly();
-    let v = r.as_array();
-    convert::check_shape(v.shape(), &[None, Some(4), Some(2), Some(3)], "points")?;
-    let k = v.shape()[0];
-    let flat: Vec<f64> = v.iter().copied().collect();
-    let rows = ArrayView2::from_shape((8 * k, 3), &flat)
-        .map_err(|e| value_error(format!("points: {e}")))?;
-    Ok((0..k)
-        .map(|q| core::array::from_fn(|i| moving_points(&rows, 4 * q + i)))
-        .collect())
+    let p = read_points(obj, "points", &[None, Some(4), Some(2), Some(3)])?;
+    Ok(p.chunks_exact(4).map(|q| [q[0], q[1], q[2], q[3]]).collect())
 }
 
-/// Every query of a batch answered over the cores; the first error names its query.
-fn answer_all<T: Send>(
-    queries: &[[MovingPoint; 4]],
-    f: impl Fn(&[MovingPoint; 4]) -> Result<T, Error> + Sync,
+/// The queries of the batch `points` answered over the cores with the GIL released; the
+/// first error names its query.
+fn answer_batch<T: Send>(
+    py: Python<'_>, points: &Arg, f: impl Fn(&[MovingPoint; 4]) -> Result<T, Error> + Sync + Send,
 ) -> PyResult<Vec<T>> {
-    queries
-        .par_iter()
-        .enumerate()
-        .map(|(k, q)| f(q).map_err(|e| (k, e)))
-        .collect::<Result<Vec<T>, (usize, Error)>>()
-        .map_err(|(k, e)| value_error(format!("points[{k}]: {e}")))
+    let queries = batch(points)?;
+    py.detach(|| {
+        queries
+            .par_iter()
+            .enumerate()
+            .map(|(k, q)| f(q).map_err(|e| (k, e)))
+            .collect::<Result<Vec<T>, (usize, Error)>>()
+    })
+    .map_err(|(k, e)| value_error(format!("points[{k}]: {e}")))
 }
 
 fn vf(q: &[MovingPoint; 4]) -> (&MovingPoint, [MovingPoint; 3]) {
@@ -152,8 +139,7 @@ fn ee(q: &[MovingPoint; 4]) -> ([MovingPoint; 2], [MovingPoint; 2]) {
 
 /// First contacts as a `(k, 2)` float64 array of `[lo, hi]`, NaN where none.
 fn bounds_array<'py>(
-    py: Python<'py>,
-    times: &[Option<RsContactTime>],
+    py: Python<'py>, times: &[Option<RsContactTime>],
 ) -> Bound<'py, PyArray2<f64>> {
     let mut a = Array2::<f64>::from_elem((times.len(), 2), f64::NAN);
     for (k, t) in times.iter().enumerate() {
@@ -167,26 +153,22 @@ fn bounds_array<'py>(
 
 // ------------------------------------------------------------------ primitives
 
-/// Whether the moving vertex (``(2, 3)`` float64: start, end) and the moving closed triangle
+/// Whether the moving vertex (``(2, 3)``: start, end) and the moving closed triangle
 /// ``face`` (``(3, 2, 3)``: each corner's start and end) touch at some ``t`` in ``[0, 1]``,
 /// exactly (no tolerance; touching counts). A non-finite coordinate raises ``CgaError``.
 #[pyfunction]
 pub fn vertex_face_touch(
-    py: Python<'_>,
-    vertex: &Bound<'_, PyAny>,
-    face: &Bound<'_, PyAny>,
+    py: Python<'_>, vertex: &Bound<'_, PyAny>, face: &Bound<'_, PyAny>,
 ) -> PyResult<bool> {
     let (v, f) = (self::vertex(vertex)?, self::face(face)?);
     py.detach(|| motion::vertex_face_touch(&v, &f)).map_err(err)
 }
 
-/// Whether the moving closed edges ``a`` and ``b`` (``(2, 2, 3)`` float64 each: each end's
+/// Whether the moving closed edges ``a`` and ``b`` (``(2, 2, 3)`` each: each end's
 /// start and end) touch at some ``t`` in ``[0, 1]``, exactly.
 #[pyfunction]
 pub fn edge_edge_touch(
-    py: Python<'_>,
-    a: &Bound<'_, PyAny>,
-    b: &Bound<'_, PyAny>,
+    py: Python<'_>, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>,
 ) -> PyResult<bool> {
     let (a, b) = (edge(a, "a")?, edge(b, "b")?);
     py.detach(|| motion::edge_edge_touch(&a, &b)).map_err(err)
@@ -194,19 +176,15 @@ pub fn edge_edge_touch(
 
 /// The earliest time the moving vertex touches the moving triangle, a ``ContactTime`` at most
 /// ``tolerance`` wide (or as narrow as float64 allows; ``0.0`` for the narrowest), or ``None``
-/// if they never touch in ``[0, 1]``.
+/// if they never touch in ``[0, 1]``. A tolerance that is NaN or negative raises ``CgaError``.
 #[pyfunction]
 #[pyo3(signature = (vertex, face, tolerance = 1e-9))]
 pub fn vertex_face_first_contact(
-    py: Python<'_>,
-    vertex: &Bound<'_, PyAny>,
-    face: &Bound<'_, PyAny>,
-    tolerance: f64,
+    py: Python<'_>, vertex: &Bound<'_, PyAny>, face: &Bound<'_, PyAny>, tolerance: f64,
 ) -> PyResult<Option<ContactTime>> {
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
     let (v, f) = (self::vertex(vertex)?, self::face(face)?);
-    let t = py
-        .detach(|| motion::vertex_face_first_contact(&v, &f, tolerance))
-        .map_err(err)?;
+    let t = py.detach(|| motion::vertex_face_first_contact(&v, &f, tolerance)).map_err(err)?;
     Ok(contact_time(t))
 }
 
@@ -215,52 +193,35 @@ pub fn vertex_face_first_contact(
 #[pyfunction]
 #[pyo3(signature = (a, b, tolerance = 1e-9))]
 pub fn edge_edge_first_contact(
-    py: Python<'_>,
-    a: &Bound<'_, PyAny>,
-    b: &Bound<'_, PyAny>,
-    tolerance: f64,
+    py: Python<'_>, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, tolerance: f64,
 ) -> PyResult<Option<ContactTime>> {
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
     let (a, b) = (edge(a, "a")?, edge(b, "b")?);
-    let t = py
-        .detach(|| motion::edge_edge_first_contact(&a, &b, tolerance))
-        .map_err(err)?;
+    let t = py.detach(|| motion::edge_edge_first_contact(&a, &b, tolerance)).map_err(err)?;
     Ok(contact_time(t))
 }
 
-/// ``vertex_face_touch`` for many queries in one call: ``points`` is ``(k, 4, 2, 3)`` float64,
-/// each query the moving vertex then the triangle's three moving corners; returns a ``(k,)``
-/// bool array. Answered over the cores with the GIL released.
+/// ``vertex_face_touch`` for many queries in one call: ``points`` is ``(k, 4, 2, 3)``, each
+/// query the moving vertex then the triangle's three moving corners; returns a ``(k,)`` bool
+/// array. Answered over the cores with the GIL released.
 #[pyfunction]
-pub fn vertex_face_touch_batch<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, numpy::PyArray1<bool>>> {
-    let q = batch(points)?;
-    let hits = py.detach(|| {
-        answer_all(&q, |q| {
-            let (v, f) = vf(q);
-            motion::vertex_face_touch(v, &f)
-        })
+pub fn vertex_face_touch_batch<'py>(py: Python<'py>, points: &Arg) -> PyResult<Bools<'py>> {
+    let hits = answer_batch(py, points, |q| {
+        let (v, f) = vf(q);
+        motion::vertex_face_touch(v, &f)
     })?;
-    Ok(numpy::ndarray::Array1::from_vec(hits).into_pyarray(py))
+    Ok(bools(py, hits))
 }
 
-/// ``edge_edge_touch`` for many queries in one call: ``points`` is ``(k, 4, 2, 3)`` float64,
-/// each query the two ends of edge ``a`` then those of edge ``b``; returns a ``(k,)`` bool
-/// array.
+/// ``edge_edge_touch`` for many queries in one call: ``points`` is ``(k, 4, 2, 3)``, each
+/// query the two ends of edge ``a`` then those of edge ``b``; returns a ``(k,)`` bool array.
 #[pyfunction]
-pub fn edge_edge_touch_batch<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, numpy::PyArray1<bool>>> {
-    let q = batch(points)?;
-    let hits = py.detach(|| {
-        answer_all(&q, |q| {
-            let (a, b) = ee(q);
-            motion::edge_edge_touch(&a, &b)
-        })
+pub fn edge_edge_touch_batch<'py>(py: Python<'py>, points: &Arg) -> PyResult<Bools<'py>> {
+    let hits = answer_batch(py, points, |q| {
+        let (a, b) = ee(q);
+        motion::edge_edge_touch(&a, &b)
     })?;
-    Ok(numpy::ndarray::Array1::from_vec(hits).into_pyarray(py))
+    Ok(bools(py, hits))
 }
 
 /// ``vertex_face_first_contact`` for many queries (``points`` as in
@@ -269,16 +230,12 @@ pub fn edge_edge_touch_batch<'py>(
 #[pyfunction]
 #[pyo3(signature = (points, tolerance = 1e-9))]
 pub fn vertex_face_first_contact_batch<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-    tolerance: f64,
+    py: Python<'py>, points: &Arg, tolerance: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let q = batch(points)?;
-    let times = py.detach(|| {
-        answer_all(&q, |q| {
-            let (v, f) = vf(q);
-            motion::vertex_face_first_contact(v, &f, tolerance)
-        })
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
+    let times = answer_batch(py, points, |q| {
+        let (v, f) = vf(q);
+        motion::vertex_face_first_contact(v, &f, tolerance)
     })?;
     Ok(bounds_array(py, &times))
 }
@@ -288,16 +245,12 @@ pub fn vertex_face_first_contact_batch<'py>(
 #[pyfunction]
 #[pyo3(signature = (points, tolerance = 1e-9))]
 pub fn edge_edge_first_contact_batch<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-    tolerance: f64,
+    py: Python<'py>, points: &Arg, tolerance: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let q = batch(points)?;
-    let times = py.detach(|| {
-        answer_all(&q, |q| {
-            let (a, b) = ee(q);
-            motion::edge_edge_first_contact(&a, &b, tolerance)
-        })
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
+    let times = answer_batch(py, points, |q| {
+        let (a, b) = ee(q);
+        motion::edge_edge_first_contact(&a, &b, tolerance)
     })?;
     Ok(bounds_array(py, &times))
 }
@@ -323,6 +276,30 @@ fn pair_tuple<'py>(py: Python<'py>, p: &MotionPair) -> PyResult<Bound<'py, PyTup
 #[pyclass(frozen, module = "cga_collide.motion")]
 pub struct MotionContacts {
     inner: motion::MotionContacts,
+}
+
+/// `[v, f]` of a vertex–face pair.
+fn vertex_face_of(p: &MotionPair) -> Option<(u32, u32)> {
+    match *p {
+        MotionPair::VertexFace(v, f) => Some((v, f)),
+        _ => None,
+    }
+}
+
+/// `[f, v]` of a face–vertex pair.
+fn face_vertex_of(p: &MotionPair) -> Option<(u32, u32)> {
+    match *p {
+        MotionPair::FaceVertex(f, v) => Some((f, v)),
+        _ => None,
+    }
+}
+
+/// The two edges of an edge–edge pair.
+fn edge_edge_of(p: &MotionPair) -> Option<([u32; 2], [u32; 2])> {
+    match *p {
+        MotionPair::EdgeEdge(a, b) => Some((a, b)),
+        _ => None,
+    }
 }
 
 impl MotionContacts {
@@ -351,47 +328,25 @@ impl MotionContacts {
     /// meets ``first_contact``'s), as tuples like ``pairs``.
     #[getter]
     fn first_pairs<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyTuple>>> {
-        self.inner
-            .first_pairs
-            .iter()
-            .map(|p| pair_tuple(py, p))
-            .collect()
+        self.inner.first_pairs.iter().map(|p| pair_tuple(py, p)).collect()
     }
 
     /// The ``("vertex_face", v, f)`` pairs as a ``(p, 2)`` int64 array of ``[v, f]``.
     #[getter]
     fn vertex_face<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        convert::pairs(
-            py,
-            &self.pairs_of(|p| match *p {
-                MotionPair::VertexFace(v, f) => Some((v, f)),
-                _ => None,
-            }),
-        )
+        convert::pairs(py, &self.pairs_of(vertex_face_of))
     }
 
     /// The ``("face_vertex", f, v)`` pairs as a ``(p, 2)`` int64 array of ``[f, v]``.
     #[getter]
     fn face_vertex<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
-        convert::pairs(
-            py,
-            &self.pairs_of(|p| match *p {
-                MotionPair::FaceVertex(f, v) => Some((f, v)),
-                _ => None,
-            }),
-        )
+        convert::pairs(py, &self.pairs_of(face_vertex_of))
     }
 
     /// The ``("edge_edge", a, b)`` pairs as a ``(q, 2, 2)`` int64 array of ``[a, b]``.
     #[getter]
     fn edge_edge<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray3<i64>> {
-        edge_pairs(
-            py,
-            &self.pairs_of(|p| match *p {
-                MotionPair::EdgeEdge(a, b) => Some((a, b)),
-                _ => None,
-            }),
-        )
+        edge_pairs(py, &self.pairs_of(edge_edge_of))
     }
 
     /// Number of touching pairs.
@@ -426,13 +381,10 @@ fn edge_pairs<'py>(py: Python<'py>, p: &[([u32; 2], [u32; 2])]) -> Bound<'py, Py
 
 /// The Rust `Collider::contacts_during`, called from `Collider.contacts_during`.
 pub fn contacts_during(
-    py: Python<'_>,
-    a: &RsCollider,
-    poses: &Bound<'_, PyAny>,
-    b: &RsCollider,
-    other_poses: &Bound<'_, PyAny>,
-    tolerance: f64,
+    py: Python<'_>, a: &RsCollider, poses: &Bound<'_, PyAny>, b: &RsCollider,
+    other_poses: &Bound<'_, PyAny>, tolerance: f64,
 ) -> PyResult<MotionContacts> {
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
     let pa = convert::pose_motion(poses, "poses")?;
     let pb = convert::pose_motion(other_poses, "other_poses")?;
     let inner = py
@@ -490,19 +442,17 @@ impl StepContacts {
 }
 
 /// Every vertex–face and edge–edge contact of a mesh deforming over one step, exactly: the
-/// mesh is ``vertices_start`` (``(n, 3)`` float64) and ``faces`` (``(m, 3)`` integers) at
-/// ``t = 0``, each vertex moving linearly to its row of ``vertices_end`` (``(n, 3)`` float64)
+/// mesh is ``vertices_start`` (``(n, 3)``) and ``faces`` (``(m, 3)`` integers) at
+/// ``t = 0``, each vertex moving linearly to its row of ``vertices_end`` (``(n, 3)``)
 /// at ``t = 1``. Pairs that share a vertex are excluded. The first contact time is bounded to
 /// ``tolerance``. Returns a ``StepContacts``.
 #[pyfunction]
 #[pyo3(signature = (vertices_start, faces, vertices_end, tolerance = 1e-9))]
 pub fn step_self_contacts(
-    py: Python<'_>,
-    vertices_start: &Bound<'_, PyAny>,
-    faces: &Bound<'_, PyAny>,
-    vertices_end: &Bound<'_, PyAny>,
-    tolerance: f64,
+    py: Python<'_>, vertices_start: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>,
+    vertices_end: &Bound<'_, PyAny>, tolerance: f64,
 ) -> PyResult<StepContacts> {
+    let tolerance = convert::tolerance(tolerance, "tolerance")?;
     let start = convert::points(vertices_start, "vertices_start")?;
     let f = convert::faces(faces, start.len())?;
     let end = convert::points(vertices_end, "vertices_end")?;

@@ -8,8 +8,9 @@ use numpy::PyArray2;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
-use crate::collider::{Collider, Distance};
+use crate::collider::Collider;
 use crate::convert::{self, err, value_error};
+use crate::distance::Distance;
 
 /// A handle to an object of a ``Scene``: hashable, comparable, with ``index`` (its slot:
 /// 0, 1, 2, ... in the order objects are added to a fresh scene). A handle to a removed
@@ -52,8 +53,7 @@ pub struct Scene {
 
 impl Scene {
     fn pair<'py>(
-        py: Python<'py>,
-        (a, b): (RsObjectId, RsObjectId),
+        py: Python<'py>, (a, b): (RsObjectId, RsObjectId),
     ) -> PyResult<Bound<'py, PyTuple>> {
         PyTuple::new(py, [id(a), id(b)])
     }
@@ -64,9 +64,7 @@ impl Scene {
     /// An empty scene.
     #[new]
     fn py_new() -> Scene {
-        Scene {
-            inner: RsScene::new(),
-        }
+        Scene { inner: RsScene::new() }
     }
 
     /// Number of objects.
@@ -78,33 +76,27 @@ impl Scene {
         format!("Scene(objects={})", self.inner.len())
     }
 
-    /// Adds ``collider`` at ``pose`` (``(4, 4)`` float64; ``None`` is the identity) and
+    /// Adds ``collider`` at ``pose`` (``(4, 4)``; ``None`` is the identity) and
     /// returns its ``ObjectId``. The collider is shared, not copied.
     #[pyo3(signature = (collider, pose = None))]
     fn add(&mut self, collider: &Collider, pose: Option<&Bound<'_, PyAny>>) -> PyResult<ObjectId> {
         let pose = convert::pose_or_identity(pose, "pose")?;
-        self.inner
-            .add(Arc::clone(&collider.inner), pose)
-            .map(id)
-            .map_err(err)
+        self.inner.add(Arc::clone(&collider.inner), pose).map(id).map_err(err)
     }
 
     /// Removes an object and returns its collider.
     fn remove(&mut self, object: ObjectId) -> PyResult<Collider> {
-        self.inner
-            .remove(object.inner)
-            .map(|inner| Collider { inner })
-            .map_err(err)
+        self.inner.remove(object.inner).map(|inner| Collider { inner }).map_err(err)
     }
 
-    /// Moves an object to ``pose`` (``(4, 4)`` float64).
+    /// Moves an object to ``pose`` (``(4, 4)``).
     fn set_pose(&mut self, object: ObjectId, pose: &Bound<'_, PyAny>) -> PyResult<()> {
         let pose = convert::pose(pose, "pose")?;
         self.inner.set_pose(object.inner, pose).map_err(err)
     }
 
     /// Moves many objects at once: ``objects`` a sequence of ``ObjectId`` and ``poses`` a
-    /// ``(k, 4, 4)`` float64 array of the same length. Nothing moves if any pose is refused.
+    /// ``(k, 4, 4)`` array of the same length. Nothing moves if any pose is refused.
     fn set_poses(&mut self, objects: Vec<ObjectId>, poses: &Bound<'_, PyAny>) -> PyResult<()> {
         let poses = convert::poses(poses, "poses")?;
         if poses.len() != objects.len() {
@@ -127,9 +119,7 @@ impl Scene {
     /// The collider of an object.
     fn collider(&self, object: ObjectId) -> PyResult<Collider> {
         let c = self.inner.collider(object.inner).map_err(err)?;
-        Ok(Collider {
-            inner: Arc::clone(c),
-        })
+        Ok(Collider { inner: Arc::clone(c) })
     }
 
     /// The handles of every object, in slot order.
@@ -150,9 +140,7 @@ impl Scene {
     /// Collision groups: a pair is tested only when each object's ``groups`` meet the other's
     /// ``mask`` (32-bit masks; by default every object is in every group).
     fn set_groups(&mut self, object: ObjectId, groups: u32, mask: u32) -> PyResult<()> {
-        self.inner
-            .set_groups(object.inner, groups, mask)
-            .map_err(err)
+        self.inner.set_groups(object.inner, groups, mask).map_err(err)
     }
 
     /// Whether pairs touch as closed solids (one inside the other counts) rather than
@@ -178,10 +166,7 @@ impl Scene {
 
     /// Every object that ``collider`` placed at ``pose`` would touch (it is not added).
     fn colliding_at(
-        &self,
-        py: Python<'_>,
-        collider: &Collider,
-        pose: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, collider: &Collider, pose: &Bound<'_, PyAny>,
     ) -> PyResult<Vec<ObjectId>> {
         let pose = convert::pose(pose, "pose")?;
         let (s, c) = (&self.inner, &collider.inner);
@@ -191,10 +176,9 @@ impl Scene {
 
     /// Every pair of objects whose surfaces come within ``c`` (closed), sorted.
     fn pairs_within_distance<'py>(
-        &self,
-        py: Python<'py>,
-        c: f64,
+        &self, py: Python<'py>, c: f64,
     ) -> PyResult<Vec<Bound<'py, PyTuple>>> {
+        let c = convert::distance_bound(c, "c")?;
         let s = &self.inner;
         let pairs = py.detach(|| s.pairs_within_distance(c)).map_err(err)?;
         pairs.into_iter().map(|p| Scene::pair(py, p)).collect()
@@ -210,9 +194,7 @@ impl Scene {
 
     /// The object nearest to ``object`` and the distance, ``(other, Distance)``, or ``None``.
     fn nearest_to(
-        &self,
-        py: Python<'_>,
-        object: ObjectId,
+        &self, py: Python<'_>, object: ObjectId,
     ) -> PyResult<Option<(ObjectId, Distance)>> {
         let s = &self.inner;
         let best = py.detach(|| s.nearest_to(object.inner)).map_err(err)?;
@@ -221,10 +203,7 @@ impl Scene {
 
     /// Every object whose surface the closed segment ``p``–``q`` meets, sorted.
     fn segment_hits(
-        &self,
-        py: Python<'_>,
-        p: &Bound<'_, PyAny>,
-        q: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, p: &Bound<'_, PyAny>, q: &Bound<'_, PyAny>,
     ) -> PyResult<Vec<ObjectId>> {
         let seg = Segment::new(convert::point(p, "p")?, convert::point(q, "q")?).map_err(err)?;
         let s = &self.inner;

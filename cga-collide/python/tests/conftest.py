@@ -5,6 +5,8 @@ import pathlib
 import numpy as np
 import pytest
 
+import cga_collide as cc
+
 HERE = pathlib.Path(__file__).resolve().parent
 FIXTURES = HERE / "fixtures"
 REPO = HERE.parents[2]
@@ -22,11 +24,7 @@ def translation(x: float, y: float = 0.0, z: float = 0.0) -> np.ndarray:
 
 
 def rotation_z(degrees: float, t=(0.0, 0.0, 0.0)) -> np.ndarray:
-    a = np.radians(degrees)
-    m = np.eye(4)
-    m[:2, :2] = [[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]]
-    m[:3, 3] = t
-    return m
+    return cc.pose_from_degrees([0.0, 0.0, degrees], t)
 
 
 def random_poses(k: int, seed: int, spread: float = 1.0) -> np.ndarray:

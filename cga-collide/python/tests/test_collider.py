@@ -55,10 +55,11 @@ def test_load_formats(bunny):
 @pytest.mark.parametrize(
     "vertices, faces, error, words",
     [
-        (np.zeros((3, 3), np.float32), np.array([[0, 1, 2]]), TypeError, "float32"),
-        ([[0.0, 0, 0]] * 3, np.array([[0, 1, 2]]), TypeError, "numpy array"),
+        (np.zeros((3, 3), np.complex128), np.array([[0, 1, 2]]), cc.CgaError, "vertices: .*complex"),
+        ([[0.0, 0, 0], [1, 0, 0], [0, 1]], np.array([[0, 1, 2]]), cc.CgaError, "vertices: expected an array of numbers"),
         (np.zeros((3, 2)), np.array([[0, 1, 2]]), cc.CgaError, "shape"),
-        (np.zeros((3, 3)), np.array([[0.0, 1, 2]]), TypeError, "integer"),
+        (np.zeros((3, 3)), np.array([[0.0, 1, 2]]), cc.CgaError, "faces: expected integers"),
+        (np.zeros((3, 3)), np.array([[True, False, True]]), cc.CgaError, "faces: expected integers"),
         (np.zeros((3, 3)), np.array([[0, 1, 3]]), cc.CgaError, "face 0: vertex index 3"),
         (np.zeros((3, 3)), np.array([[0, -1, 2]]), cc.CgaError, "vertex index -1"),
         (np.zeros((3, 3)), np.zeros((0, 3), np.int64), cc.CgaError, "empty"),
@@ -88,9 +89,9 @@ def test_file_errors_name_the_file_and_line(tmp_path):
 @pytest.mark.parametrize(
     "pose, error, words",
     [
-        (np.eye(4, dtype=np.float32), TypeError, "float32"),
-        (np.eye(4, dtype=np.int64), TypeError, "int64"),
-        (np.eye(4).tolist(), TypeError, "numpy array"),
+        (np.eye(4, dtype=np.complex128), cc.CgaError, "complex"),
+        (np.eye(4, dtype=bool), cc.CgaError, "booleans"),
+        (np.eye(4).astype(str), cc.CgaError, "not an array of real numbers"),
         (np.eye(3), cc.CgaError, r"shape \(4, 4\)"),
         (np.diag([2.0, 2.0, 2.0, 1.0]), cc.CgaError, "not a rotation"),
         (np.diag([1.0, 1.0, -1.0, 1.0]), cc.CgaError, "det"),
@@ -101,7 +102,7 @@ def test_file_errors_name_the_file_and_line(tmp_path):
 def test_bad_poses_are_refused(cube, pose, error, words):
     with pytest.raises(error, match=words):
         cube.collides_at(pose, cube, I)
-    with pytest.raises(error, match="pose_b" if error is cc.CgaError else words):
+    with pytest.raises(error, match="pose_b"):
         cube.collides_at(I, cube, pose)
 
 

@@ -49,8 +49,8 @@ def test_handles_errors_and_removal(cube):
         scene.add(cube, np.diag([1.0, 1.0, 1.0, 2.0]))
     with pytest.raises(cc.CgaError, match="2 objects and 1 poses"):
         scene.set_poses([a, c], np.stack([I]))
-    with pytest.raises(TypeError, match="float32"):
-        scene.set_pose(a, np.eye(4, dtype=np.float32))
+    with pytest.raises(cc.CgaError, match="pose: .*complex"):
+        scene.set_pose(a, np.eye(4, dtype=np.complex128))
     assert scene.nearest_pair() is not None and cc.Scene().nearest_pair() is None
 
 
@@ -100,16 +100,46 @@ def test_scene_equals_brute_force():
         probe = cc.Collider.cuboid(np.zeros(3), np.ones(3))
         hits = [ids[i] for i in range(n) if probe.collides_at(I, kinds[i], poses[i])]
         assert scene.colliding_at(probe, I) == hits
+        # With pairs touching, the nearest pair is one of them, at distance 0.
         p, q, d = scene.nearest_pair()
-        if not pairs:
-            best = min(
-                kinds[i].distance_at(poses[i], kinds[j], poses[j]).distance
-                for i, j in itertools.combinations(range(n), 2)
-            )
-            assert abs(d.distance - best) <= 2 * d.error_bound
+        assert (p, q) in pairs and d.distance == 0.0
         # move everything in one call
         poses = random_poses(n, seed=20 + step, spread=5.0)
         scene.set_poses(ids, poses)
+
+
+def test_nearest_pair_and_nearest_to_equal_brute_force():
+    """Objects apart (a jittered grid, random turns), so the nearest pair is a real distance
+    query; the scene's answers against every pair's certified distance."""
+    rng = np.random.default_rng(31)
+    shapes = [cc.Collider.cuboid(np.zeros(3), rng.uniform(0.3, 1.0, 3)) for _ in range(3)]
+    grid = [(x, y, z) for x in range(3) for y in range(3) for z in range(2)]
+    n = len(grid)
+    poses = random_poses(n, seed=32, spread=0.4)
+    poses[:, :3, 3] += 3.0 * np.array(grid)
+    kinds = [shapes[k % 3] for k in range(n)]
+    scene = cc.Scene()
+    ids = [scene.add(kinds[k], poses[k]) for k in range(n)]
+    assert scene.colliding_pairs() == []
+    dist = {
+        (i, j): kinds[i].distance_at(poses[i], kinds[j], poses[j])
+        for i, j in itertools.combinations(range(n), 2)
+    }
+    best = min(d.distance for d in dist.values())
+    slack = max(d.error_bound for d in dist.values())
+    p, q, d = scene.nearest_pair()
+    i, j = sorted((ids.index(p), ids.index(q)))
+    assert 0.0 < d.distance <= best + d.error_bound + slack
+    assert abs(d.distance - dist[(i, j)].distance) <= d.error_bound + dist[(i, j)].error_bound
+    # The witnesses lie on the two objects' surfaces, that far apart.
+    assert np.isclose(np.linalg.norm(d.witness_a - d.witness_b), d.distance, rtol=1e-12, atol=0)
+    for k in (0, 7, n - 1):
+        other, dk = scene.nearest_to(ids[k])
+        mine = {(a if b == k else b): dist[(a, b)] for a, b in dist if k in (a, b)}
+        want = min(x.distance for x in mine.values())
+        o = ids.index(other)
+        assert o != k and dk.distance <= want + dk.error_bound + slack
+        assert abs(dk.distance - mine[o].distance) <= dk.error_bound + mine[o].error_bound
 
 
 def test_segment_hits(cube):
