@@ -2,174 +2,336 @@
 
 from fractions import Fraction
 from os import PathLike
-from typing import List, Literal, Optional, Sequence, Tuple, Union
+from typing import List, Literal, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
+from numpy.typing import ArrayLike
 
 from . import motion as motion
 from .motion import MotionContacts
 
-Float64Array = npt.NDArray[np.float64]
-IntArray = npt.NDArray[np.integer]
-Int64Array = npt.NDArray[np.int64]
-BoolArray = npt.NDArray[np.bool_]
-Mode = Literal["bvh", "brute"]
-ContactClass = Literal["disjoint", "touching", "penetrating", "a_inside_b", "b_inside_a"]
-ContactKind = Literal["point", "segment", "polygon"]
-Contact = Tuple[Tuple[int, int], ContactKind, Float64Array]
-ExactPoint = Tuple[Fraction, Fraction, Fraction]
+_Float64Array = npt.NDArray[np.float64]
+_Int64Array = npt.NDArray[np.int64]
+_BoolArray = npt.NDArray[np.bool_]
+_Mode = Literal["bvh", "brute"]
+_ContactClass = Literal["disjoint", "touching", "penetrating", "a_inside_b", "b_inside_a"]
+_ContactKind = Literal["point", "segment", "polygon"]
+_Contact = Tuple[Tuple[int, int], _ContactKind, _Float64Array]
+_ExactPoint = Tuple[Fraction, Fraction, Fraction]
 
 ROTATION_TOLERANCE: float
 """How far a pose's 3x3 block may be from a rotation: max |RᵀR − I|."""
 
 class CgaError(ValueError):
-    """An input the library refused; the message says what was wrong and where."""
+    """An input the library refused (a mesh, a file, a pose, a batch item, a scene handle): the message says what was wrong and where. A subclass of ValueError."""
 
+@final
 class Distance:
-    """A certified distance: ``|distance − true distance| <= error_bound``."""
+    """A certified distance between two meshes: ``distance`` is within ``error_bound`` of the true
+    minimum distance between the surfaces; ``witness_a`` and ``witness_b`` are points on each
+    surface (world coordinates) whose distance is ``distance``; ``triangles`` is the pair of
+    triangle indices they lie on (``None`` when not known).
+    """
 
     @property
-    def distance(self) -> float: ...
+    def distance(self) -> float:
+        """The distance found (an upper bound, at most ``error_bound`` above the true distance)."""
     @property
-    def error_bound(self) -> float: ...
+    def error_bound(self) -> float:
+        """The proved bound on ``|distance − true distance|``."""
     @property
-    def witness_a(self) -> Float64Array: ...
+    def witness_a(self) -> _Float64Array:
+        """The witness point on the first mesh, a ``(3,)`` float64 array."""
     @property
-    def witness_b(self) -> Float64Array: ...
+    def witness_b(self) -> _Float64Array:
+        """The witness point on the second mesh, a ``(3,)`` float64 array."""
     @property
-    def triangles(self) -> Optional[Tuple[int, int]]: ...
+    def triangles(self) -> Optional[Tuple[int, int]]:
+        """The triangle pair of the witnesses, or ``None``."""
     def __float__(self) -> float: ...
 
+@final
 class DistanceBatch:
-    """Certified distances of a batch, as arrays (``triangles`` is -1 where unknown)."""
+    """The certified distances of a batch, as arrays: ``distance`` and ``error_bound`` ``(k,)``,
+    ``witness_a`` and ``witness_b`` ``(k, 3)``, ``triangles`` ``(k, 2)`` int64 (``-1`` where not
+    known).
+    """
 
     @property
-    def distance(self) -> Float64Array: ...
+    def distance(self) -> _Float64Array:
+        """``(k,)`` float64."""
     @property
-    def error_bound(self) -> Float64Array: ...
+    def error_bound(self) -> _Float64Array:
+        """``(k,)`` float64."""
     @property
-    def witness_a(self) -> Float64Array: ...
+    def witness_a(self) -> _Float64Array:
+        """``(k, 3)`` float64."""
     @property
-    def witness_b(self) -> Float64Array: ...
+    def witness_b(self) -> _Float64Array:
+        """``(k, 3)`` float64."""
     @property
-    def triangles(self) -> Int64Array: ...
+    def triangles(self) -> _Int64Array:
+        """``(k, 2)`` int64, ``-1`` where not known."""
     def __len__(self) -> int: ...
 
+@final
 class Collider:
-    """A triangle mesh built once, and every question about it (one frame, ``_at`` under
-    ``(4, 4)`` float64 poses, ``_batch`` for ``(k, 4, 4)`` arrays of poses)."""
+    """A triangle mesh built once (its box tree and the layout the pose queries read), and every
+    question about it.
 
-    def __init__(self, vertices: Float64Array, faces: IntArray, mode: Mode = "bvh") -> None: ...
+    Build it from arrays, ``Collider(vertices, faces)`` with vertices ``(n, 3)`` numbers and
+    faces ``(m, 3)`` integers (0-based), or from a file with ``Collider.load(path)`` (.obj,
+    .off, .ply, .stl, optionally .gz). Numbers float64 does not hold exactly, a wrong shape, a
+    non-finite coordinate, an index out of range or an empty mesh raise ``CgaError`` (a
+    ``ValueError``) naming the argument, vertex or face.
+
+    Every question comes in the crate's three forms: in one frame ``a.x(b)``; under poses
+    ``a.x_at(pose_a, b, pose_b)`` with ``(4, 4)`` homogeneous matrices; and many poses
+    at once ``a.x_batch(b, poses_a, poses_b)`` with ``(k, 4, 4)`` arrays (either may be one
+    ``(4, 4)`` pose used for every query), answered in one call with numpy arrays back. Yes/no
+    answers are exact: touching counts as colliding, with no tolerance anywhere.
+
+    ``mode`` is ``"bvh"`` (the default: box tree) or ``"brute"`` (every triangle): a choice of
+    speed, never of answer.
+    """
+
+    def __new__(cls, vertices: ArrayLike, faces: ArrayLike, mode: _Mode = "bvh") -> Collider: ...
     @staticmethod
-    def load(path: Union[str, PathLike[str]], mode: Mode = "bvh") -> Collider: ...
+    def load(path: Union[str, PathLike[str]], mode: _Mode = "bvh") -> Collider:
+        """Reads a mesh file (.obj, .off, .ply, .stl, each optionally .gz; the format from the
+        extension) and builds its collider. Errors name the file and line (or byte).
+        """
     @staticmethod
-    def cuboid(lo: Float64Array, hi: Float64Array, mode: Mode = "bvh") -> Collider: ...
-    def with_mode(self, mode: Mode) -> Collider: ...
+    def cuboid(lo: ArrayLike, hi: ArrayLike, mode: _Mode = "bvh") -> Collider:
+        """An axis-aligned box from corner ``lo`` to corner ``hi`` (``(3,)`` each)."""
+    def with_mode(self, mode: _Mode) -> Collider:
+        """The same mesh and trees with another mode (``"bvh"`` or ``"brute"``)."""
     @property
-    def mode(self) -> Mode: ...
+    def mode(self) -> _Mode:
+        """``"bvh"`` or ``"brute"``."""
     @property
-    def vertices(self) -> Float64Array: ...
+    def vertices(self) -> _Float64Array:
+        """The vertices, a fresh ``(n, 3)`` float64 array."""
     @property
-    def faces(self) -> Int64Array: ...
+    def faces(self) -> _Int64Array:
+        """The faces, a fresh ``(m, 3)`` int64 array."""
     @property
-    def num_triangles(self) -> int: ...
+    def num_triangles(self) -> int:
+        """Number of triangles."""
     @property
-    def bounds(self) -> Float64Array: ...
-    def is_closed(self) -> bool: ...
+    def bounds(self) -> _Float64Array:
+        """The axis-aligned bounds of the mesh, ``(2, 3)`` float64: ``[min, max]``."""
+    def is_closed(self) -> bool:
+        """Whether the mesh is closed (every edge shared by exactly two triangles)."""
     # surfaces
-    def collides(self, other: Collider) -> bool: ...
-    def collides_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> bool: ...
-    def collides_batch(self, other: Collider, poses_a: Float64Array, poses_b: Float64Array) -> BoolArray: ...
-    def intersecting_pairs(self, other: Collider) -> Int64Array: ...
-    def intersecting_pairs_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> Int64Array: ...
+    def collides(self, other: Collider) -> bool:
+        """Whether the two surfaces touch (in one frame), exactly."""
+    def collides_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> bool:
+        """Whether the surfaces touch with ``self`` at ``pose_a`` and ``other`` at ``pose_b``
+        (``(4, 4)`` homogeneous rigid motions).
+        """
+    def collides_batch(self, other: Collider, poses_a: ArrayLike, poses_b: ArrayLike) -> _BoolArray:
+        """``collides_at`` for every pose pair: ``poses_a`` and ``poses_b`` are ``(k, 4, 4)``
+        (either may be one ``(4, 4)`` pose); returns a ``(k,)`` bool array.
+        """
+    def intersecting_pairs(self, other: Collider) -> _Int64Array:
+        """Every intersecting triangle pair ``(i, j)`` (``i`` in ``self``, ``j`` in ``other``),
+        sorted, as a ``(p, 2)`` int64 array.
+        """
+    def intersecting_pairs_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> _Int64Array:
+        """``intersecting_pairs`` under poses."""
     def intersecting_pairs_batch(
-        self, other: Collider, poses_a: Float64Array, poses_b: Float64Array
-    ) -> List[Int64Array]: ...
+        self, other: Collider, poses_a: ArrayLike, poses_b: ArrayLike
+    ) -> List[_Int64Array]:
+        """``intersecting_pairs_at`` for every pose pair: a list of ``(p, 2)`` int64 arrays."""
     # solids
-    def collides_solid(self, other: Collider) -> bool: ...
-    def collides_solid_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> bool: ...
-    def collides_solid_batch(self, other: Collider, poses_a: Float64Array, poses_b: Float64Array) -> BoolArray: ...
-    def contains_point(self, p: Float64Array) -> bool: ...
-    def contains_point_at(self, pose: Float64Array, p: Float64Array) -> bool: ...
+    def collides_solid(self, other: Collider) -> bool:
+        """Whether the closed solids share a point (one may be inside the other), in one frame."""
+    def collides_solid_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> bool:
+        """``collides_solid`` under poses."""
+    def collides_solid_batch(self, other: Collider, poses_a: ArrayLike, poses_b: ArrayLike) -> _BoolArray:
+        """``collides_solid_at`` for every pose pair: a ``(k,)`` bool array."""
+    def contains_point(self, p: ArrayLike) -> bool:
+        """Whether the point ``p`` (``(3,)``, finite) is in the closed solid (on the surface
+        counts). The mesh should be closed.
+        """
+    def contains_point_at(self, pose: ArrayLike, p: ArrayLike) -> bool:
+        """``contains_point`` with the mesh at ``pose`` and ``p`` in world coordinates."""
     # distances
-    def within_distance(self, other: Collider, c: float) -> bool: ...
-    def within_distance_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array, c: float) -> bool: ...
+    def within_distance(self, other: Collider, c: float) -> bool:
+        """Whether the surfaces come within distance ``c`` (closed: exactly ``c`` counts), exactly."""
+    def within_distance_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike, c: float) -> bool:
+        """``within_distance`` under poses."""
     def within_distance_batch(
-        self, other: Collider, poses_a: Float64Array, poses_b: Float64Array, c: float
-    ) -> BoolArray: ...
-    def pairs_within_distance(self, other: Collider, c: float) -> Int64Array: ...
+        self, other: Collider, poses_a: ArrayLike, poses_b: ArrayLike, c: float
+    ) -> _BoolArray:
+        """``within_distance_at`` for every pose pair: a ``(k,)`` bool array."""
+    def pairs_within_distance(self, other: Collider, c: float) -> _Int64Array:
+        """Every triangle pair whose triangles come within ``c``, sorted, ``(p, 2)`` int64."""
     def pairs_within_distance_at(
-        self, pose_a: Float64Array, other: Collider, pose_b: Float64Array, c: float
-    ) -> Int64Array: ...
-    def distance(self, other: Collider) -> Distance: ...
-    def distance_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> Distance: ...
-    def distance_batch(self, other: Collider, poses_a: Float64Array, poses_b: Float64Array) -> DistanceBatch: ...
+        self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike, c: float
+    ) -> _Int64Array:
+        """``pairs_within_distance`` under poses."""
+    def distance(self, other: Collider) -> Distance:
+        """The certified minimum distance between the surfaces (a ``Distance``), in one frame."""
+    def distance_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> Distance:
+        """``distance`` under poses (witnesses in world coordinates)."""
+    def distance_batch(self, other: Collider, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
+        """``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays."""
     def exact_distance(
         self, other: Collider
-    ) -> Tuple[Fraction, ExactPoint, ExactPoint, Optional[Tuple[int, int]]]: ...
+    ) -> Tuple[Fraction, _ExactPoint, _ExactPoint, Optional[Tuple[int, int]]]:
+        """The exact minimum distance: ``(distance2, witness_a, witness_b, triangles)`` with the
+        squared distance and the witnesses' coordinates as ``fractions.Fraction``.
+        """
     # contacts
-    def contact_class(self, other: Collider) -> ContactClass: ...
-    def contact_class_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> ContactClass: ...
-    def contacts(self, other: Collider) -> List[Contact]: ...
-    def contacts_at(self, pose_a: Float64Array, other: Collider, pose_b: Float64Array) -> List[Contact]: ...
+    def contact_class(self, other: Collider) -> _ContactClass:
+        """How two closed meshes touch: ``"disjoint"``, ``"touching"``, ``"penetrating"``,
+        ``"a_inside_b"`` or ``"b_inside_a"``.
+        """
+    def contact_class_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> _ContactClass:
+        """``contact_class`` under poses."""
+    def contacts(self, other: Collider) -> List[_Contact]:
+        """Every intersecting triangle pair with its exact intersection: a list of
+        ``((i, j), kind, points)`` with ``kind`` ``"point"``, ``"segment"`` or ``"polygon"`` and
+        ``points`` a ``(c, 3)`` float64 array of its corners (nearest values of the exact ones).
+        """
+    def contacts_at(self, pose_a: ArrayLike, other: Collider, pose_b: ArrayLike) -> List[_Contact]:
+        """``contacts`` under poses (world coordinates)."""
     # motion between two poses (continuous collision; see cga_collide.motion)
     def contacts_during(
-        self, poses: Float64Array, other: Collider, other_poses: Float64Array, tolerance: float = 1e-9
-    ) -> MotionContacts: ...
+        self, poses: ArrayLike, other: Collider, other_poses: ArrayLike, tolerance: float = 1e-9
+    ) -> MotionContacts:
+        """Every vertex–face and edge–edge pair of ``self`` and ``other`` that touches while
+        ``self`` moves from ``poses[0]`` to ``poses[1]`` and ``other`` from ``other_poses[0]`` to
+        ``other_poses[1]`` (``(2, 4, 4)`` arrays; each vertex moves linearly between its
+        two placed positions), exactly, with the first contact time bounded to ``tolerance``.
+        Returns a ``cga_collide.motion.MotionContacts``; a refused pose raises ``CgaError``.
+        """
     # self-intersection
-    def self_intersections(self) -> Int64Array: ...
-    def self_intersects(self) -> bool: ...
+    def self_intersections(self) -> _Int64Array:
+        """Every pair of non-adjacent triangles of the mesh that intersect, ``(p, 2)`` int64."""
+    def self_intersects(self) -> bool:
+        """Whether the mesh cuts itself."""
     # shapes
-    def segment_hits(self, p: Float64Array, q: Float64Array) -> Int64Array: ...
-    def segment_hits_at(self, pose: Float64Array, p: Float64Array, q: Float64Array) -> Int64Array: ...
-    def triangle_hits(self, triangle_corners: Float64Array) -> Int64Array: ...
-    def triangle_hits_at(self, pose: Float64Array, triangle_corners: Float64Array) -> Int64Array: ...
-    def sphere_hits(self, centre: Float64Array, radius: float) -> Int64Array: ...
-    def sphere_hits_at(self, pose: Float64Array, centre: Float64Array, radius: float) -> Int64Array: ...
-    def ball_hits(self, centre: Float64Array, radius: float) -> Int64Array: ...
-    def ball_hits_at(self, pose: Float64Array, centre: Float64Array, radius: float) -> Int64Array: ...
+    def segment_hits(self, p: ArrayLike, q: ArrayLike) -> _Int64Array:
+        """The triangles the closed segment ``p``–``q`` meets, an int64 array of indices."""
+    def segment_hits_at(self, pose: ArrayLike, p: ArrayLike, q: ArrayLike) -> _Int64Array:
+        """``segment_hits`` with the mesh at ``pose`` and the segment in world coordinates."""
+    def triangle_hits(self, triangle_corners: ArrayLike) -> _Int64Array:
+        """The triangles a triangle (``(3, 3)``, one corner per row) meets."""
+    def triangle_hits_at(self, pose: ArrayLike, triangle_corners: ArrayLike) -> _Int64Array:
+        """``triangle_hits`` with the mesh at ``pose``."""
+    def sphere_hits(self, centre: ArrayLike, radius: float) -> _Int64Array:
+        """The triangles the sphere surface (``centre`` ``(3,)``, ``radius``) meets."""
+    def sphere_hits_at(self, pose: ArrayLike, centre: ArrayLike, radius: float) -> _Int64Array:
+        """``sphere_hits`` with the mesh at ``pose``."""
+    def ball_hits(self, centre: ArrayLike, radius: float) -> _Int64Array:
+        """The triangles the solid ball (``centre`` ``(3,)``, ``radius``) meets."""
+    def ball_hits_at(self, pose: ArrayLike, centre: ArrayLike, radius: float) -> _Int64Array:
+        """``ball_hits`` with the mesh at ``pose``."""
     # bytes and pickling (the box tree travels with the collider, never rebuilt)
-    def to_bytes(self) -> bytes: ...
+    def to_bytes(self) -> bytes:
+        """The collider as bytes (mesh, mode, shape of the box tree); ``Collider.from_bytes``
+        reads them back without rebuilding the tree.
+        """
     @staticmethod
-    def from_bytes(data: bytes) -> Collider: ...
+    def from_bytes(data: bytes) -> Collider:
+        """A collider from ``to_bytes``' bytes, without rebuilding its tree."""
     def __reduce__(self) -> Tuple[object, Tuple[bytes]]: ...
     @staticmethod
-    def _from_bytes(data: bytes) -> Collider: ...
+    def _from_bytes(data: bytes) -> Collider:
+        """The collider of bytes from ``__reduce__`` (the Rust ``Collider::to_bytes``), its tree
+        not rebuilt; bad bytes raise ``CgaError``.
+        """
 
+@final
 class ObjectId:
-    """A handle to an object of a Scene (hashable, ordered)."""
+    """A handle to an object of a ``Scene``: hashable, comparable, with ``index`` (its slot:
+    0, 1, 2, ... in the order objects are added to a fresh scene). A handle to a removed
+    object is refused, never taken for the object that reused its slot.
+    """
 
     @property
-    def index(self) -> int: ...
+    def index(self) -> int:
+        """The object's slot."""
     def __int__(self) -> int: ...
     def __hash__(self) -> int: ...
-    def __eq__(self, other: object) -> bool: ...
-    def __lt__(self, other: ObjectId) -> bool: ...
+    def __eq__(self, value: object, /) -> bool: ...
+    def __lt__(self, value: ObjectId, /) -> bool: ...
+    def __le__(self, value: ObjectId, /) -> bool: ...
+    def __gt__(self, value: ObjectId, /) -> bool: ...
+    def __ge__(self, value: ObjectId, /) -> bool: ...
 
+@final
 class Scene:
-    """Many placed colliders; exact answers for every pair."""
+    """Many objects, each a ``Collider`` placed by a pose, and exact answers about every pair of
+    them. One collider can be placed many times without copying. A broad phase (sweep and
+    prune over world boxes) proposes pairs and each is decided exactly by the colliders' pose
+    queries, in parallel, with the GIL released.
+    """
 
-    def __init__(self) -> None: ...
+    def __init__(self) -> None:
+        """Initialize self.  See help(type(self)) for accurate signature."""
     def __len__(self) -> int: ...
-    def add(self, collider: Collider, pose: Optional[Float64Array] = None) -> ObjectId: ...
-    def remove(self, object: ObjectId) -> Collider: ...
-    def set_pose(self, object: ObjectId, pose: Float64Array) -> None: ...
-    def set_poses(self, objects: Sequence[ObjectId], poses: Float64Array) -> None: ...
-    def pose(self, object: ObjectId) -> Float64Array: ...
-    def collider(self, object: ObjectId) -> Collider: ...
-    def ids(self) -> List[ObjectId]: ...
-    def exclude_pair(self, a: ObjectId, b: ObjectId) -> None: ...
-    def include_pair(self, a: ObjectId, b: ObjectId) -> None: ...
-    def set_groups(self, object: ObjectId, groups: int, mask: int) -> None: ...
-    def set_solid(self, solid: bool) -> None: ...
-    def colliding_pairs(self) -> List[Tuple[ObjectId, ObjectId]]: ...
-    def colliding_with(self, object: ObjectId) -> List[ObjectId]: ...
-    def colliding_at(self, collider: Collider, pose: Float64Array) -> List[ObjectId]: ...
-    def pairs_within_distance(self, c: float) -> List[Tuple[ObjectId, ObjectId]]: ...
-    def nearest_pair(self) -> Optional[Tuple[ObjectId, ObjectId, Distance]]: ...
-    def nearest_to(self, object: ObjectId) -> Optional[Tuple[ObjectId, Distance]]: ...
-    def segment_hits(self, p: Float64Array, q: Float64Array) -> List[ObjectId]: ...
+    def add(self, collider: Collider, pose: Optional[ArrayLike] = None) -> ObjectId:
+        """Adds ``collider`` at ``pose`` (``(4, 4)``; ``None`` is the identity) and
+        returns its ``ObjectId``. The collider is shared, not copied.
+        """
+    def remove(self, object: ObjectId) -> Collider:
+        """Removes an object and returns its collider."""
+    def set_pose(self, object: ObjectId, pose: ArrayLike) -> None:
+        """Moves an object to ``pose`` (``(4, 4)``)."""
+    def set_poses(self, objects: Sequence[ObjectId], poses: ArrayLike) -> None:
+        """Moves many objects at once: ``objects`` a sequence of ``ObjectId`` and ``poses`` a
+        ``(k, 4, 4)`` array of the same length. Nothing moves if any pose is refused.
+        """
+    def pose(self, object: ObjectId) -> _Float64Array:
+        """The pose of an object, a ``(4, 4)`` float64 array."""
+    def collider(self, object: ObjectId) -> Collider:
+        """The collider of an object."""
+    def ids(self) -> List[ObjectId]:
+        """The handles of every object, in slot order."""
+    def exclude_pair(self, a: ObjectId, b: ObjectId) -> None:
+        """Leaves the pair ``(a, b)`` out of every pair question (parts that touch by design)."""
+    def include_pair(self, a: ObjectId, b: ObjectId) -> None:
+        """Undoes ``exclude_pair``."""
+    def set_groups(self, object: ObjectId, groups: int, mask: int) -> None:
+        """Collision groups: a pair is tested only when each object's ``groups`` meet the other's
+        ``mask`` (32-bit masks; by default every object is in every group).
+        """
+    def set_solid(self, solid: bool) -> None:
+        """Whether pairs touch as closed solids (one inside the other counts) rather than
+        surfaces.
+        """
+    def colliding_pairs(self) -> List[Tuple[ObjectId, ObjectId]]:
+        """Every pair of objects ``(a, b)`` that touch, exactly, sorted, as a list of tuples of
+        ``ObjectId``.
+        """
+    def colliding_with(self, object: ObjectId) -> List[ObjectId]:
+        """Every object that touches ``object``, sorted."""
+    def colliding_at(self, collider: Collider, pose: ArrayLike) -> List[ObjectId]:
+        """Every object that ``collider`` placed at ``pose`` would touch (it is not added)."""
+    def pairs_within_distance(self, c: float) -> List[Tuple[ObjectId, ObjectId]]:
+        """Every pair of objects whose surfaces come within ``c`` (closed), sorted."""
+    def nearest_pair(self) -> Optional[Tuple[ObjectId, ObjectId, Distance]]:
+        """The nearest pair ``(a, b, Distance)``, or ``None`` with fewer than two objects that may
+        be paired.
+        """
+    def nearest_to(self, object: ObjectId) -> Optional[Tuple[ObjectId, Distance]]:
+        """The object nearest to ``object`` and the distance, ``(other, Distance)``, or ``None``."""
+    def segment_hits(self, p: ArrayLike, q: ArrayLike) -> List[ObjectId]:
+        """Every object whose surface the closed segment ``p``–``q`` meets, sorted."""
+
+def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = None) -> _Float64Array:
+    """The ``(4, 4)`` float64 pose that rotates by ``degrees[0]`` about the x axis, then by
+    ``degrees[1]`` about the y axis, then by ``degrees[2]`` about the z axis (fixed axes,
+    right-handed, counter-clockwise looking down the axis), then translates by ``translation``
+    (``None`` for none): ``x -> Rz Ry Rx x + t``. The convention of the ``cga`` command line's
+    ``--rotate`` and ``--translate`` and of the Rust ``pose_from_degrees``, so a pose written
+    for one is the same pose in the other.
+    """
 
 __all__ = [
     "CgaError",
@@ -180,4 +342,5 @@ __all__ = [
     "ROTATION_TOLERANCE",
     "Scene",
     "motion",
+    "pose_from_degrees",
 ]

@@ -19,6 +19,10 @@ Deliberate differences from trimesh's FCL-backed manager (see ``docs/python.md``
   necessarily the deepest; for non-convex objects the depth is an estimate, as FCL's is.
 * A transform must be a rigid motion (rotation and translation, ``max |RᵀR − I| <= 1e-6``):
   scale and shear are refused with a ``CgaError`` rather than silently mishandled.
+
+Contact normals, depths and the negative distances of colliding objects come from convex
+hulls computed with scipy (``pip install 'cga-collide[trimesh]'``); without scipy those
+requests raise an ``ImportError`` that says so, and yes/no and distance answers still work.
 """
 
 from __future__ import annotations
@@ -28,7 +32,7 @@ from typing import Any, Dict, Iterable, List, Optional, Set, Tuple
 
 import numpy as np
 
-from ._native import Collider, ObjectId, Scene
+from . import Collider, ObjectId, Scene
 
 __all__ = ["CollisionManager", "ContactData", "DistanceData", "mesh_to_collider"]
 
@@ -46,14 +50,12 @@ class _Hull:
 
     def __init__(self, vertices: np.ndarray, faces: np.ndarray):
         points = np.asarray(vertices, dtype=np.float64)
-        try:
-            from scipy.spatial import ConvexHull
-
-            hull = ConvexHull(points)
+        hull = _convex_hull(points)
+        if hull is not None:
             verts = points[hull.vertices]
             normals = hull.equations[:, :3]
             simplices = hull.simplices
-        except Exception:  # flat or tiny meshes: fall back to the mesh itself
+        else:  # flat or tiny meshes have no solid hull: the mesh itself stands in
             verts = points
             simplices = np.asarray(faces)
             a, b, c = (points[simplices[:, k]] for k in range(3))
@@ -68,6 +70,23 @@ class _Hull:
         self.vertices = verts
         self.normals = _unique_directions(normals)
         self.edges = _unique_directions(edges)
+
+
+def _convex_hull(points: np.ndarray) -> Any:
+    """scipy's convex hull of ``points``, or ``None`` where qhull finds no solid hull (a flat
+    mesh, fewer than four points)."""
+    try:
+        # scipy ships no type information (scipy-stubs is a package of its own).
+        from scipy.spatial import ConvexHull, QhullError  # type: ignore[import-untyped]
+    except ImportError as e:
+        raise ImportError(
+            "cga_collide.trimesh needs scipy for contact normals and penetration depths "
+            "(convex hulls): pip install 'cga-collide[trimesh]' (or 'cga-collide[scipy]')"
+        ) from e
+    try:
+        return ConvexHull(points)
+    except QhullError:
+        return None
 
 
 def _unique_directions(v: np.ndarray) -> np.ndarray:
@@ -95,13 +114,13 @@ def _penetration(
     ra, rb = pose_a[:3, :3], pose_b[:3, :3]
     va = hull_a.vertices @ ra.T + pose_a[:3, 3]
     vb = hull_b.vertices @ rb.T + pose_b[:3, 3]
-    axes = [hull_a.normals @ ra.T, hull_b.normals @ rb.T]
+    candidates = [hull_a.normals @ ra.T, hull_b.normals @ rb.T]
     ea, eb = hull_a.edges @ ra.T, hull_b.edges @ rb.T
     if len(ea) * len(eb) <= _MAX_EDGE_AXES:
         cross = np.cross(ea[:, None, :], eb[None, :, :]).reshape(-1, 3)
         norm = np.linalg.norm(cross, axis=1)
-        axes.append(cross[norm > 1e-9] / norm[norm > 1e-9, None])
-    axes = np.concatenate(axes)
+        candidates.append(cross[norm > 1e-9] / norm[norm > 1e-9, None])
+    axes = np.concatenate(candidates)
     pa, pb = va @ axes.T, vb @ axes.T
     forward = pa.max(axis=0) - pb.min(axis=0)  # push b along +axis
     backward = pb.max(axis=0) - pa.min(axis=0)  # push b along -axis
@@ -398,7 +417,7 @@ class CollisionManager:
         if return_names or return_data:
             for a, b in pairs:
                 na, nb = self._names[a], self._names[b]
-                names.add(tuple(sorted((na, nb))))
+                names.add((na, nb) if na <= nb else (nb, na))
                 if return_data:
                     data.extend(_contact_data(self._objs[na], na, self._objs[nb], nb))
         return self._ret(bool(pairs), names, data, return_names, return_data)
@@ -448,10 +467,10 @@ class CollisionManager:
             self._scene.remove(tmp)
         if near is None:
             return None
-        oid, d = near
-        ij = d.triangles if d.triangles is not None else (-1, -1)
+        oid, dist = near
+        ij = dist.triangles if dist.triangles is not None else (-1, -1)
         # nearest_to measures from the added object: swap to (manager object, outside)
-        return d.distance, self._names[oid], (ij[1], ij[0]), d.witness_b, d.witness_a
+        return dist.distance, self._names[oid], (ij[1], ij[0]), dist.witness_b, dist.witness_a
 
     def min_distance_single(
         self, mesh: Any, transform: Any = None, return_name: bool = False, return_data: bool = False
@@ -483,10 +502,10 @@ class CollisionManager:
                 other = self._names[touching[0]]
                 d, ij, pa, pb = _signed(me, self._objs[other], return_data)
             else:
-                near = self._scene.nearest_to(me.id)
-                if near is None:
+                nearest = self._scene.nearest_to(me.id)
+                if nearest is None:
                     return self._ret(float("inf"), None, None, return_names, return_data)
-                oid, dist = near
+                oid, dist = nearest
                 other = self._names[oid]
                 d, pa, pb = dist.distance, dist.witness_a, dist.witness_b
                 ij = dist.triangles if dist.triangles is not None else (-1, -1)

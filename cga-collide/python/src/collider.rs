@@ -18,8 +18,10 @@ use crate::distance::{distance_batch, Distance, DistanceBatch};
 /// question about it.
 ///
 /// Build it from arrays, ``Collider(vertices, faces)`` with vertices ``(n, 3)`` numbers and
-/// faces ``(m, 3)`` integers, or from a file with ``Collider.load(path)`` (.obj, .off, .ply, .stl,
-/// optionally .gz).
+/// faces ``(m, 3)`` integers (0-based), or from a file with ``Collider.load(path)`` (.obj,
+/// .off, .ply, .stl, optionally .gz). Numbers float64 does not hold exactly, a wrong shape, a
+/// non-finite coordinate, an index out of range or an empty mesh raise ``CgaError`` (a
+/// ``ValueError``) naming the argument, vertex or face.
 ///
 /// Every question comes in the crate's three forms: in one frame ``a.x(b)``; under poses
 /// ``a.x_at(pose_a, b, pose_b)`` with ``(4, 4)`` homogeneous matrices; and many poses
@@ -119,10 +121,7 @@ impl Collider {
 
 #[pymethods]
 impl Collider {
-    /// Builds a collider from ``vertices`` (``(n, 3)`` numbers) and ``faces`` (``(m, 3)``
-    /// integers, 0-based). Raises ``CgaError`` (a ``ValueError``) for numbers float64 does not
-    /// hold exactly, a wrong shape, a non-finite coordinate, an index out of range or an empty
-    /// mesh, naming the argument, vertex or face.
+    // `Collider(vertices, faces, mode)`: Python shows the class docstring for the constructor.
     #[new]
     #[pyo3(signature = (vertices, faces, mode = "bvh"))]
     fn py_new(

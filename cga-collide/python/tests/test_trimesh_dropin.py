@@ -1,6 +1,8 @@
 """cga_collide.trimesh.CollisionManager beyond trimesh's own tests: float64 transforms,
 return conventions, agreement with the colliders' exact answers."""
 
+import sys
+
 import numpy as np
 import pytest
 
@@ -90,3 +92,32 @@ def test_agrees_with_colliders(box):
         if cols[i % 2].collides_at(moved[i], cols[j % 2], moved[j])
     }
     assert m.in_collision_internal(return_names=True)[1] == want
+
+
+class Square:
+    """A flat mesh (two triangles): qhull finds no solid hull, the mesh stands in for it."""
+
+    vertices = np.array([[-1.0, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]])
+    faces = np.array([[0, 1, 2], [0, 2, 3]])
+
+
+def test_flat_meshes_get_contact_data():
+    m = CollisionManager()
+    m.add_object("a", Square())
+    m.add_object("b", Square(), cc.pose_from_degrees([90.0, 0.0, 0.0]))  # crossing at right angles
+    hit, data = m.in_collision_internal(return_data=True)
+    assert hit and data
+    for c in data:
+        assert np.isfinite(c.point).all() and np.isclose(np.linalg.norm(c.normal), 1.0) and c.depth >= 0.0
+
+
+def test_without_scipy_contact_data_names_the_extra(monkeypatch, box):
+    monkeypatch.setitem(sys.modules, "scipy.spatial", None)  # `from scipy.spatial import` fails
+    m = CollisionManager()
+    m.add_object("a", box)
+    m.add_object("b", box, translation(0.5))
+    # yes/no and names need no convex hull ...
+    assert m.in_collision_internal(return_names=True) == (True, {("a", "b")})
+    # ... contact data does, and says which extra brings scipy
+    with pytest.raises(ImportError, match=r"pip install 'cga-collide\[trimesh\]'"):
+        m.in_collision_internal(return_data=True)
