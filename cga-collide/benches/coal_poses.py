@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Times coal (the FCL successor) per new pose on the poses of the pose benchmark.
 
-Not part of CI. Needs `pip install coal numpy`. Usage, from the repository root:
+Not part of CI. Needs `pip install coal numpy` and the cga_collide wheel (for
+`pose_from_degrees`, the command line's pose formula). Usage, from the repository root:
 
     python3 cga-collide/benches/coal_poses.py [--poses FILE] [--repeat N]
 
@@ -20,20 +21,12 @@ import os
 import sys
 import time
 
+import cga_collide as cc
 import coal
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(__file__))
 from coal_bench import model, read_off, unit  # noqa: E402
-
-
-def rotation(ax, ay, az):
-    ax, ay, az = np.radians([ax, ay, az])
-    cx, sx, cy, sy, cz, sz = np.cos(ax), np.sin(ax), np.cos(ay), np.sin(ay), np.cos(az), np.sin(az)
-    rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
-    ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
-    rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
-    return rz @ ry @ rx
 
 
 def read_poses(path):
@@ -43,7 +36,8 @@ def read_poses(path):
             line = line.split("#", 1)[0].replace(",", " ").split()
             if line:
                 v = [float(x) for x in line]
-                out.append(coal.Transform3s(rotation(*v[:3]), np.array(v[3:])))
+                pose = cc.pose_from_degrees(v[:3], v[3:])
+                out.append(coal.Transform3s(np.ascontiguousarray(pose[:3, :3]), pose[:3, 3].copy()))
     return out
 
 

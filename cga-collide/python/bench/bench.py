@@ -63,26 +63,16 @@ def unit(verts):
     return (verts - centre) * (1.0 / side if side > 0 else 1.0)
 
 
-def rotation(ax, ay, az):
-    ax, ay, az = np.radians([ax, ay, az])
-    cx, sx, cy, sy, cz, sz = np.cos(ax), np.sin(ax), np.cos(ay), np.sin(ay), np.cos(az), np.sin(az)
-    rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
-    ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
-    rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
-    return rz @ ry @ rx
-
-
 def read_poses(path):
+    """The poses of a `--poses` file (rotation about x, y, z in degrees, then the translation),
+    as the command line reads them."""
     out = []
     with open(path) as f:
         for line in f:
             v = line.split("#", 1)[0].replace(",", " ").split()
             if v:
                 v = [float(x) for x in v]
-                m = np.eye(4)
-                m[:3, :3] = rotation(*v[:3])
-                m[:3, 3] = v[3:]
-                out.append(m)
+                out.append(cc.pose_from_degrees(v[:3], v[3:]))
     return np.array(out)
 
 
