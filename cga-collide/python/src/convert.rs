@@ -374,7 +374,7 @@ pub fn pose_pairs(a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>) -> PyResult<Vec<Po
     })
 }
 
-/// The pose of [`pose_from_degrees`](cga_collide::collider::pose_from_degrees): `degrees`
+/// The pose of [`pose_from_degrees`]: `degrees`
 /// and `translation` `(3,)` arrays (the translation `None` for none).
 pub fn degrees_pose(
     degrees: &Bound<'_, PyAny>, translation: Option<&Bound<'_, PyAny>>,
