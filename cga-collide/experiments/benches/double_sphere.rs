@@ -2,7 +2,7 @@
 //! brute-force exact answer (every triangle pair plus containment) and the GJK reference of
 //! [`cga_collide::collider::convex`], on the same random placements.
 //!
-//! `cargo bench -p cga-collide --bench double_sphere -- --warm-up-time 1 --measurement-time 3`
+//! `cargo bench -p cga-experiments --bench double_sphere -- --warm-up-time 1 --measurement-time 3`
 //!
 //! The second group times `DoubleSphereTree::build` at level 3 for the five solids.
 //!
@@ -13,12 +13,12 @@
 
 use std::hint::black_box;
 
-use cga_cli::experiment::placement;
 use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::{Intersects, Triangle};
+use cga_experiments::experiment::placement;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 const N: usize = 1000;

@@ -1,7 +1,7 @@
 //! Prints the README table: on the fixed adversarial set, how often each method is wrong
 //! (against the independent exact oracle).
 //!
-//! Run: `cargo run --release -p cga-cli --example adversarial_table`
+//! Run: `cargo run --release -p cga-experiments --example adversarial_table`
 
 use cga_collide::exact::{ExactKernel, FloatKernel};
 use cga_collide::testing::adversarial::{adversarial_set, Case};

@@ -2,7 +2,7 @@
 //! plain `f64` signs (no error bound, no fall-back) would be wrong, on a fixed adversarial set:
 //! the table of `docs/thesis.md`.
 //!
-//! `cargo run -p cga-cli --release --example conformal_filter_table -- [cases per pair]`
+//! `cargo run -p cga-experiments --release --example conformal_filter_table -- [cases per pair]`
 
 use cga_collide::testing::conformal::filter_tallies;
 

@@ -1,7 +1,7 @@
 //! Decision statistics of the double-sphere tree on random placements (no timing: use the
 //! `double_sphere` benchmark for that).
 //!
-//! `cargo run -p cga-cli --release --example double_sphere_stats -- [placements] [radius] [level]`
+//! `cargo run -p cga-experiments --release --example double_sphere_stats -- [placements] [radius] [level]`
 //!
 //! For each of the paper's four pairs and both inner-sphere kinds: how many placements collide,
 //! how each answer was decided, the mean numbers of sphere and triangle tests, and a check of
@@ -9,11 +9,11 @@
 
 use std::collections::BTreeMap;
 
-use cga_cli::experiment::placement;
 use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::Point3;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_experiments::experiment::placement;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

@@ -9,20 +9,20 @@
 //! centre) then descended simultaneously), agreement with the exact answer, and for the octree
 //! trees (an approximation from outside) their false positives; false negatives must be 0.
 //!
-//! Run: `cargo run --release -p cga-cli --example hierarchy_compare [PLACEMENTS] [SVG]`
+//! Run: `cargo run --release -p cga-experiments --example hierarchy_compare [PLACEMENTS] [SVG]`
 //! (default 20000 placements per pair and size). Prints markdown; writes the plot when SVG is
 //! given.
 
 use std::time::Instant;
 
-use cga_cli::experiment::{calibrate_radius, placement, PAPER_PAIRS};
-use cga_cli::plot::{svg_bar_charts, BarChart};
 use cga_collide::collider::convex::ConvexMeshRef;
 use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::SphereTree;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_experiments::experiment::{calibrate_radius, placement, PAPER_PAIRS};
+use cga_experiments::plot::{svg_bar_charts, BarChart};
 
 /// What one method answered over the placements.
 #[derive(Default, Clone)]

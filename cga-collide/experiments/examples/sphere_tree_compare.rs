@@ -4,7 +4,7 @@
 //! time and ball–ball tests of the paper's method and of the simultaneous descent, and the
 //! sphere trees' false positives / negatives against `Collider::collides_solid`.
 //!
-//! Run: `cargo run --release -p cga-cli --example sphere_tree_compare [PLACEMENTS] [MAX_DEPTH]`
+//! Run: `cargo run --release -p cga-experiments --example sphere_tree_compare [PLACEMENTS] [MAX_DEPTH]`
 //! (defaults 1000 and 7). Prints markdown tables.
 
 use std::time::{Duration, Instant};

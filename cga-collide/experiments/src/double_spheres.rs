@@ -1,4 +1,4 @@
-//! `cga experiment double-spheres`: the double-sphere paper's experiment (its Tables 2 and 3)
+//! `cga-experiment double-spheres`: the double-sphere paper's experiment (its Tables 2 and 3)
 //! on our exact hierarchy, every answer checked against the exact reference.
 
 use std::fs;
@@ -6,31 +6,18 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use cga_cli::experiment::{
-    calibrate_radius, run as run_variants, ExperimentResult, Variant, PAPER_PAIRS,
-};
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
-use clap::{Args, Subcommand, ValueEnum};
+use cga_experiments::experiment::{
+    calibrate_radius, run as run_variants, ExperimentResult, Variant, PAPER_PAIRS,
+};
+use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::output;
 
 mod report;
 use report::{csv, json_report, markdown, plot};
-
-/// Experiments of the papers.
-#[derive(Args, Debug)]
-pub struct ExperimentArgs {
-    #[command(subcommand)]
-    which: Experiment,
-}
-
-#[derive(Subcommand, Debug)]
-enum Experiment {
-    /// The double outer/inner sphere hierarchy on the paper's polyhedra pairs (Tables 2, 3).
-    DoubleSpheres(DoubleSpheresArgs),
-}
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 enum InnerArg {
@@ -42,8 +29,9 @@ enum InnerArg {
     Both,
 }
 
+/// The double-sphere experiment's options.
 #[derive(Args, Debug)]
-struct DoubleSpheresArgs {
+pub struct DoubleSpheresArgs {
     /// Placements per pair and experiment-sphere size (the paper: 1,000,000).
     #[arg(long, default_value_t = 1_000_000)]
     placements: u64,
@@ -82,13 +70,6 @@ struct DoubleSpheresArgs {
     /// No progress bar.
     #[arg(long)]
     quiet: bool,
-}
-
-/// Runs `cga experiment`.
-pub fn run(args: ExperimentArgs) -> Result<()> {
-    match args.which {
-        Experiment::DoubleSpheres(a) => double_spheres(a),
-    }
 }
 
 /// One configuration of trees evaluated on the shared placements.
@@ -130,7 +111,8 @@ fn parse_pairs(specs: &[String]) -> Result<Vec<(String, String)>> {
         .collect()
 }
 
-fn double_spheres(args: DoubleSpheresArgs) -> Result<()> {
+/// Runs `cga-experiment double-spheres`.
+pub fn run(args: DoubleSpheresArgs) -> Result<()> {
     output::check_opt("--csv", args.csv.as_deref(), None)?;
     output::check_opt("--plot", args.plot.as_deref(), Some("svg"))?;
     let pairs = parse_pairs(&args.pairs)?;

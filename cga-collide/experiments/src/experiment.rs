@@ -14,7 +14,7 @@
 //!
 //! ```
 //! use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
-//! use cga_cli::experiment::{calibrate_radius, run, Variant};
+//! use cga_experiments::experiment::{calibrate_radius, run, Variant};
 //! use cga_collide::shape::polyhedron::ConvexPolyhedron;
 //!
 //! let (a, b) = (ConvexPolyhedron::cube(), ConvexPolyhedron::octahedron());

@@ -1,8 +1,8 @@
 //! Grouped bar charts as standalone SVG text (no dependencies, no fonts to install): the plots
-//! of `cga experiment double-spheres` and of the hierarchy comparison.
+//! of `cga-experiment double-spheres` and of the hierarchy comparison.
 //!
 //! ```
-//! use cga_cli::plot::{svg_bar_charts, BarChart};
+//! use cga_experiments::plot::{svg_bar_charts, BarChart};
 //!
 //! let svg = svg_bar_charts(&[BarChart {
 //!     title: "Mean query time (µs)".into(),

@@ -1,10 +1,10 @@
-//! The tables, CSV, JSON and SVG plot of `cga experiment double-spheres`.
+//! The tables, CSV, JSON and SVG plot of `cga-experiment double-spheres`.
 
 use std::fmt::Write as _;
 
-use cga_cli::experiment::{Tally, DECISIONS, PAPER_TABLES};
-use cga_cli::plot::{svg_bar_charts, BarChart};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_experiments::experiment::{Tally, DECISIONS, PAPER_TABLES};
+use cga_experiments::plot::{svg_bar_charts, BarChart};
 use serde_json::json;
 
 use super::{inner_name, Cell, DoubleSpheresArgs, VariantSpec};
