@@ -9,7 +9,6 @@ mod ccd;
 mod collide;
 mod device;
 mod distance;
-mod experiment_cmd;
 mod mesh;
 mod output;
 mod placement;
@@ -44,8 +43,6 @@ enum Command {
     Query(query::QueryArgs),
     /// Octree sphere trees (Fuentes Socorro's method): build from meshes, collide two from a file.
     Spheretree(spheretree::SphereTreeArgs),
-    /// Run an experiment of the papers (`cga experiment double-spheres`).
-    Experiment(experiment_cmd::ExperimentArgs),
     /// Minimum distance between two meshes, with witnesses and a certified error bound.
     Distance(distance::DistanceArgs),
     /// Pairs of triangles of one mesh that meet other than in a shared vertex or edge (exact).
@@ -63,7 +60,6 @@ fn run(command: Command) -> Result<()> {
         Command::Ccd(args) => ccd::run(args),
         Command::Query(args) => query::run(args),
         Command::Spheretree(args) => spheretree::run(args),
-        Command::Experiment(args) => experiment_cmd::run(args),
         Command::Distance(args) => distance::run(args),
         Command::SelfIntersect(args) => self_intersect::run(args),
     }

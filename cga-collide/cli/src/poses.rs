@@ -1,6 +1,6 @@
-//! `cga collide A B --poses FILE`: many poses of B against A, answered by the pose queries of
-//! `cga_collide::query::posed` (both hierarchies built once, no per-pose placement), spread over
-//! the cores.
+//! `cga collide A B --poses FILE`: many poses of B against A, answered by the collider's pose
+//! batches (`Collider::collides_batch`, `Collider::intersecting_pairs_batch`: both hierarchies
+//! built once, no per-pose placement), spread over the cores.
 //!
 //! Each non-empty line of the file is `ax ay az tx ty tz` (whitespace- or comma-separated,
 //! `#` starts a comment): B is rotated by `ax`, `ay`, `az` degrees about x, then y, then z, then

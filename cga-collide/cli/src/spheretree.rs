@@ -4,8 +4,10 @@
 //!   the paper's format; `--rotate/--translate` move every mesh after the first (as `cga
 //!   collide` moves B), so `cga spheretree build bunny armadillo --unit --translate 0.3,0.05,0
 //!   --depth 5 -o pair.txt` makes a file `collide` can read.
-//! * `cga spheretree collide FILE`: whether the first two trees of the file collide, by the
-//!   paper's method, the simultaneous descent, or both (they must agree).
+//! * `cga spheretree collide FILE`: whether the first two trees of the file collide (the
+//!   simultaneous descent of `SphereTree::collides`). The paper's own collision method, as
+//!   published and fixed, is research: the experiments package compares it
+//!   (`cga-experiment spheretree-collide`).
 
 use std::fs;
 use std::path::PathBuf;
@@ -16,8 +18,7 @@ use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::format;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
-use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
-use clap::{Args, Subcommand, ValueEnum};
+use clap::{Args, Subcommand};
 use serde_json::json;
 
 use crate::mesh::load_unit;
@@ -70,26 +71,10 @@ struct BuildArgs {
     json: bool,
 }
 
-#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
-enum Method {
-    /// The paper's method (roots, leaves of X against Y's root, then each against Y), with its
-    /// `Colision_Real` fixed to try every meeting child.
-    Paper,
-    /// the paper's C++ exactly as written (follows only the first meeting child: can miss).
-    PaperAsPublished,
-    /// Simultaneous descent, larger ball first.
-    Simultaneous,
-    /// `paper` and `simultaneous`, checking that they agree.
-    Both,
-}
-
 #[derive(Args, Debug)]
 struct CollideArgs {
     /// A file in the paper's format with at least two trees.
     file: PathBuf,
-    /// Which traversal.
-    #[arg(long, value_enum, default_value_t = Method::Both)]
-    method: Method,
     /// Accept a file that ends early (report what is missing on stderr, use what is there).
     #[arg(long)]
     lenient: bool,
@@ -208,83 +193,24 @@ fn collide_cmd(args: CollideArgs) -> Result<()> {
         );
     }
     let (x, y) = (&trees[0], &trees[1]);
-    let nodes = [x.len(), y.len()];
-    let timed = |f: fn(&SphereTree, &SphereTree) -> CollisionResult| {
-        let t = Instant::now();
-        let r = f(x, y);
-        (r, t.elapsed().as_secs_f64() * 1e6)
-    };
-    let method_name = match args.method {
-        Method::Paper => "paper",
-        Method::PaperAsPublished => "paper-as-published",
-        Method::Simultaneous => "simultaneous",
-        Method::Both => "both",
-    };
-    let single = match args.method {
-        Method::Paper => Some(timed(paper_method)),
-        Method::PaperAsPublished => Some(timed(paper_method_as_published)),
-        Method::Simultaneous => Some(timed(SphereTree::collides)),
-        Method::Both => None,
-    };
-    if let Some((r, micros)) = single {
-        if args.json {
-            let mut v = result_json(&r);
-            v["method"] = json!(method_name);
-            v["nodes"] = json!(nodes);
-            v["micros"] = json!(micros);
-            println!("{v}");
-        } else {
-            println!(
-                "{} ({method_name}: {} sphere tests, {micros:.1} µs)",
-                if r.collides {
-                    "collide"
-                } else {
-                    "no collision"
-                },
-                r.sphere_tests
-            );
-        }
-        return Ok(());
-    }
-    let (s, s_us) = timed(paper_method);
-    let (m, m_us) = timed(SphereTree::collides);
-    if s.collides != m.collides {
-        // Possible only for trees whose child balls are not inside their parents.
-        eprintln!(
-            "warning: the methods disagree (paper: {}, simultaneous: {}); {} + {} child balls stick out of their parents",
-            s.collides,
-            m.collides,
-            x.nesting_violations().len(),
-            y.nesting_violations().len()
-        );
-    }
+    let start = Instant::now();
+    let r = x.collides(y);
+    let micros = start.elapsed().as_secs_f64() * 1e6;
     if args.json {
-        let mut sj = result_json(&s);
-        sj["micros"] = json!(s_us);
-        let mut mj = result_json(&m);
-        mj["micros"] = json!(m_us);
-        println!(
-            "{}",
-            json!({
-                "collides": m.collides,
-                "agree": s.collides == m.collides,
-                "method": "both",
-                "sphere_tests": s.sphere_tests + m.sphere_tests,
-                "nodes": nodes,
-                "paper": sj,
-                "simultaneous": mj,
-            })
-        );
+        let mut v = result_json(&r);
+        v["method"] = json!("simultaneous");
+        v["nodes"] = json!([x.len(), y.len()]);
+        v["micros"] = json!(micros);
+        println!("{v}");
     } else {
         println!(
-            "{} (paper: {} sphere tests, {s_us:.1} µs; simultaneous: {} sphere tests, {m_us:.1} µs)",
-            if s.collides {
+            "{} (simultaneous: {} sphere tests, {micros:.1} µs)",
+            if r.collides {
                 "collide"
             } else {
                 "no collision"
             },
-            s.sphere_tests,
-            m.sphere_tests
+            r.sphere_tests
         );
     }
     Ok(())

@@ -18,7 +18,7 @@ impl Collider {
     /// edges and vertices are counted consistently, and every sign is an exact predicate.
     ///
     /// The answer is the solid's for a closed mesh (every edge used by an even number of
-    /// triangles, see [`TriMesh::is_closed`]); for other meshes it is the even–odd rule of
+    /// triangles, see [`TriMesh::is_closed`](crate::TriMesh::is_closed)); for other meshes it is the even–odd rule of
     /// that one ray. A point with a non-finite coordinate lies in no solid: `false`.
     pub fn contains_point(&self, p: &Point3<f64>) -> bool {
         let Ok(point) = Segment::new(*p, *p) else {

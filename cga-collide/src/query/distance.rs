@@ -50,7 +50,7 @@ use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 // ---------------------------------------------------------------- results
 
-/// A minimum distance in `f64` with a certified error bound (see the [module docs](self)).
+/// A minimum distance in `f64` with a certified error bound ([`error_bound`](Self::error_bound)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CertifiedDistance {
     /// The distance computed in `f64`.
@@ -320,7 +320,7 @@ fn scale_with(points: &[&V<f64>], radii: &[f64]) -> f64 {
 }
 
 /// The minimum distance between two solid balls (0 when they meet), with witnesses and a
-/// certified bound (see the [module docs](self)).
+/// certified bound ([`CertifiedDistance`]).
 ///
 /// ```
 /// use cga_collide::{nalgebra::Point3, query, Ball};

@@ -43,7 +43,7 @@ pub fn ball_contains_box(c: &[f64; 3], r: f64, b: &Aabb) -> bool {
 }
 
 /// The closed box of a node of a tree built by
-/// [`octree::build`](crate::hierarchy::sphere_tree::octree::build), from its centre, the root
+/// [`octree::build`], from its centre, the root
 /// cube's side ([`BuildReport::side`](crate::hierarchy::sphere_tree::octree::BuildReport::side))
 /// and the node's level: `centre ± side / 2^(level+1)` (exact on the builder's grid).
 ///
