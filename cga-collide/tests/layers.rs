@@ -1,7 +1,8 @@
 //! The crate's top modules form layers: each may use only the modules listed before it in
 //! `LAYERS` (the order of the module map in `src/lib.rs`). This reads the sources and fails
-//! on any `crate::<module>` use (outside comments) that goes the other way, so an import cycle
-//! between top modules cannot come back unnoticed.
+//! on any `crate::<module>` use (outside comments, single paths and `use crate::{…}` groups,
+//! also those spanning lines) that goes the other way, so an import cycle between top modules
+//! cannot come back unnoticed.
 
 use std::collections::BTreeSet;
 use std::fs;
@@ -57,30 +58,106 @@ fn layer_of(name: &str) -> Option<usize> {
     LAYERS.iter().position(|l| *l == module)
 }
 
-/// The names a line reaches through `crate::`: `crate::a::…` gives `a`, and
-/// `crate::{a, b::c}` gives `a` and `b`.
-fn crate_paths(line: &str) -> Vec<String> {
-    let mut names = Vec::new();
-    let mut rest = line;
-    while let Some(at) = rest.find("crate::") {
-        rest = &rest[at + "crate::".len()..];
-        if let Some(group) = rest.strip_prefix('{') {
-            let end = group.find('}').unwrap_or(group.len());
-            for item in group[..end].split(',') {
-                let head = item.trim().split("::").next().unwrap_or("");
-                if !head.is_empty() {
-                    names.push(head.to_string());
+/// The source without comments (line numbers kept): a `//` outside a string literal ends the
+/// line's code. Doc links may point anywhere.
+fn code_of(text: &str) -> String {
+    text.lines()
+        .map(|line| {
+            let mut in_string = false;
+            let mut escaped = false;
+            let bytes = line.as_bytes();
+            for (i, &b) in bytes.iter().enumerate() {
+                match b {
+                    _ if escaped => escaped = false,
+                    b'\\' if in_string => escaped = true,
+                    b'"' => in_string = !in_string,
+                    b'/' if !in_string && bytes.get(i + 1) == Some(&b'/') => return &line[..i],
+                    _ => {}
                 }
+            }
+            line
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The heads of the items of a `{…}` group whose text starts just after the `{`, each with its
+/// byte offset in `group`: `a::b` gives `a`, a nested group (`a::{b, c}`) gives its head `a`
+/// once. The group may span lines.
+fn group_heads(group: &str) -> Vec<(usize, String)> {
+    let mut heads = Vec::new();
+    let mut depth = 0usize;
+    let mut item_start = 0;
+    let mut push = |from: usize, to: usize| {
+        let item = &group[from..to];
+        let head = item.split("::").next().unwrap_or("").trim();
+        if !head.is_empty() {
+            let offset = from + (item.len() - item.trim_start().len());
+            heads.push((offset, head.to_string()));
+        }
+    };
+    for (i, c) in group.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 0 => {
+                push(item_start, i);
+                return heads;
+            }
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                push(item_start, i);
+                item_start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    push(item_start, group.len());
+    heads
+}
+
+/// The names the code reaches through `crate::`, each with the 1-based number of the line
+/// that names it: `crate::a::…` gives `a`, and `crate::{a, b::c}` gives `a` and `b`, also when
+/// the group spans several lines (a multi-line `use crate::{…};` list).
+fn crate_paths(code: &str) -> Vec<(usize, String)> {
+    let line_of = |at: usize| code[..at].matches('\n').count() + 1;
+    let mut names = Vec::new();
+    for (at, _) in code.match_indices("crate::") {
+        let after = at + "crate::".len();
+        let rest = &code[after..];
+        if let Some(group) = rest.strip_prefix('{') {
+            for (offset, head) in group_heads(group) {
+                names.push((line_of(after + 1 + offset), head));
             }
         } else {
             let head: String = rest
                 .chars()
                 .take_while(|c| c.is_alphanumeric() || *c == '_')
                 .collect();
-            names.push(head);
+            names.push((line_of(at), head));
         }
     }
     names
+}
+
+/// The layering violations of one source file of the top module `top` (`file` names it in
+/// the messages).
+fn violations_in(file: &str, top: &str, text: &str) -> Vec<String> {
+    let Some(own) = layer_of(top) else {
+        return vec![format!("{file}: top module `{top}` is not in LAYERS")];
+    };
+    let mut violations = Vec::new();
+    for (line, name) in crate_paths(&code_of(text)) {
+        match layer_of(&name) {
+            Some(used) if used > own => violations.push(format!(
+                "{file}:{line}: `{top}` uses `crate::{name}`, a higher layer"
+            )),
+            Some(_) => {}
+            None => violations.push(format!(
+                "{file}:{line}: `crate::{name}` is neither a layer nor a known re-export"
+            )),
+        }
+    }
+    violations
 }
 
 #[test]
@@ -101,35 +178,11 @@ fn top_modules_use_only_lower_layers() {
         if top == "lib" || top == "bin" {
             continue;
         }
-        let Some(own) = layer_of(&top) else {
-            violations.push(format!(
-                "{}: top module `{top}` is not in LAYERS",
-                relative.display()
-            ));
-            continue;
-        };
-        seen_modules.insert(top.clone());
-        let text = fs::read_to_string(file).expect("readable source file");
-        for (number, line) in text.lines().enumerate() {
-            if line.trim_start().starts_with("//") {
-                continue; // doc links may point anywhere
-            }
-            for name in crate_paths(line) {
-                match layer_of(&name) {
-                    Some(used) if used > own => violations.push(format!(
-                        "{}:{}: `{top}` uses `crate::{name}`, a higher layer",
-                        relative.display(),
-                        number + 1
-                    )),
-                    Some(_) => {}
-                    None => violations.push(format!(
-                        "{}:{}: `crate::{name}` is neither a layer nor a known re-export",
-                        relative.display(),
-                        number + 1
-                    )),
-                }
-            }
+        if layer_of(&top).is_some() {
+            seen_modules.insert(top.clone());
         }
+        let text = fs::read_to_string(file).expect("readable source file");
+        violations.extend(violations_in(&relative.display().to_string(), &top, &text));
     }
     assert!(
         violations.is_empty(),
@@ -144,10 +197,44 @@ fn top_modules_use_only_lower_layers() {
 
 #[test]
 fn crate_paths_reads_single_and_grouped_uses() {
-    assert_eq!(crate_paths("use crate::collider::Collider;"), ["collider"]);
+    let names = |code: &str| -> Vec<String> {
+        crate_paths(code)
+            .into_iter()
+            .map(|(_, name)| name)
+            .collect()
+    };
+    assert_eq!(names("use crate::collider::Collider;"), ["collider"]);
     assert_eq!(
-        crate_paths("use crate::{Ball, bounding::Aabb};"),
-        ["Ball".to_string(), "bounding".to_string()]
+        names("use crate::{Ball, bounding::Aabb};"),
+        ["Ball", "bounding"]
     );
-    assert!(crate_paths("use super::x;").is_empty());
+    assert!(names("use super::x;").is_empty());
+    assert_eq!(
+        names("use crate::{exact::{Kernel, ExactKernel}, shape::Triangle};"),
+        ["exact", "shape"]
+    );
+}
+
+#[test]
+fn crate_paths_reads_multi_line_use_lists() {
+    let code = "use core::cmp::Ordering;\nuse crate::{\n    exact::Kernel,\n    shape::{Ball, Segment},\n    Triangle,\n};\n";
+    assert_eq!(
+        crate_paths(code),
+        [
+            (3, "exact".to_string()),
+            (4, "shape".to_string()),
+            (5, "Triangle".to_string())
+        ]
+    );
+}
+
+#[test]
+fn an_upward_import_in_a_multi_line_list_is_a_violation() {
+    let source = "//! Docs may name [`crate::collider`].\nuse crate::{\n    exact::Kernel, // not crate::scene\n    // a comment inside the list\n    collider::Collider,\n};\n";
+    let found = violations_in("query/x.rs", "query", source);
+    assert_eq!(
+        found,
+        ["query/x.rs:5: `query` uses `crate::collider`, a higher layer"]
+    );
+    assert!(violations_in("collider/x.rs", "collider", source).is_empty());
 }

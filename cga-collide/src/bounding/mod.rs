@@ -3,7 +3,10 @@
 //!
 //! | item | what it is |
 //! |---|---|
-//! | [`Bvh`], [`Aabb`], [`BuildStrategy`] | the box tree over a mesh's triangles (binned SAH, median split, or Morton order for a one-shot build), exact `f64` boxes |
+//! | [`Aabb`] (`aabb`) | the axis-aligned box, exact `f64`, and its conservative segment and ball tests |
+//! | [`Bvh`] (`bvh`), [`BvhNode`] (`node`) | the box tree over a mesh's triangles (flat node array, children in pairs) and its traversals |
+//! | [`BuildStrategy`] (`build`) | how the tree is shaped: binned SAH, full SAH sweep of small nodes, median split, or Morton order for a one-shot build, one file each |
+//! | `box_distance` | lower bounds on the distance of two boxes, for the clearance and nearest-pair searches |
 //! | `pose_tree` | the same tree laid out for queries under poses (centre and half-extents per node, vertices in leaf order) |
 //! | `oriented_boxes` | boxes fitted to each node's geometry, with a proved lower bound on the distance of two of them under a relative pose |
 //! | `pose_bounds` | a rigid pose analysed once: its rounded matrix and the proved bounds on the rounding of `pose * v` |
@@ -12,11 +15,18 @@
 //! Every test here is conservative: it may let through a candidate that does not meet, never
 //! reject one that does. The exact decision is always made afterwards, on the triangles.
 
+mod aabb;
+mod box_distance;
+mod build;
 mod bvh;
+mod node;
 pub(crate) mod oriented_boxes;
 pub(crate) mod placed_leaves;
 pub(crate) mod pose_bounds;
 pub(crate) mod pose_tree;
 
-pub(crate) use bvh::{box_distance2, boxes_within};
-pub use bvh::{triangle_box, Aabb, BuildStrategy, Bvh, BvhNode, MAX_LEAF};
+pub use aabb::{triangle_box, Aabb};
+pub(crate) use box_distance::{box_distance2, boxes_within};
+pub use build::BuildStrategy;
+pub use bvh::Bvh;
+pub use node::{BvhNode, MAX_LEAF};

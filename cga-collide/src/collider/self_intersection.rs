@@ -26,11 +26,13 @@ use crate::bounding::Aabb;
 use crate::collider::{Collider, Mode, EAGER_TREE_MIN};
 use crate::exact::{ExactPlane, PlaneSide};
 use crate::parallel::*;
-use crate::query::intersects::{
+use crate::query::coplanar::{
     coplanar_orientation, coplanar_ray_in_corner, coplanar_same_ray,
     coplanar_segment_meets_triangle, coplanar_segments_meet, coplanar_triangles_meet, extremes,
-    same_side_in_plane, segment_meets_triangle_plane, segment_meets_triangle_with_sides,
-    segments_meet, triangles_meet,
+    same_side_in_plane,
+};
+use crate::query::prepared::{
+    segment_meets_triangle_plane, segment_meets_triangle_with_sides, segments_meet, triangles_meet,
 };
 
 type P3 = [f64; 3];

@@ -397,3 +397,139 @@ impl Predicate<8> for EdgeAxis {
         dj * wk - dk * wj
     }
 }
+
+/// The hand-written expansion signs ([`orient3d_sign`](crate::exact::expansion::orient3d_sign),
+/// the direct normal components) against the big-integer signs of the same predicates.
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::expansion::{orient2d_sign, orient3d_sign, Expansion};
+    use crate::exact::sign::exact_sign;
+
+    fn e(x: f64) -> Expansion {
+        Expansion::from_f64(x)
+    }
+
+    /// A homogeneous degree-6 polynomial: `orient3d(x)^2 - 3 orient3d(x')^2` (`x'` with two
+    /// coordinates swapped).
+    struct Sextic;
+    impl Predicate<12> for Sextic {
+        fn eval<R: Ring>(x: &[R; 12]) -> R {
+            let o = crate::exact::predicates::Orient3d::eval(x);
+            let mut y = x.clone();
+            y.swap(0, 3);
+            let p = crate::exact::predicates::Orient3d::eval(&y);
+            o.clone() * o - p.clone() * p * R::from_i64(3)
+        }
+    }
+
+    #[test]
+    fn orientations_agree_with_big_integers_on_inexact_differences() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for round in 0..20_000 {
+            let scale = [1.0, 3.1e-40, 7.9e45, 1e-3][round % 4];
+            // Four points, the last on the plane of the first three up to rounding (so the
+            // exact sign is often decided far below the filter's reach), or exactly coplanar
+            // with axis-parallel structure.
+            let a = [next(), next(), next()];
+            let u = [next(), next(), next()];
+            let v = [next(), next(), next()];
+            let (s, t) = (next(), next());
+            let x: [f64; 12] = core::array::from_fn(|i| {
+                let k = i % 3;
+                let value = match i / 3 {
+                    0 => a[k],
+                    1 => a[k] + u[k],
+                    2 => a[k] + v[k],
+                    _ => a[k] + s * u[k] + t * v[k],
+                };
+                value * scale
+            });
+            if let Some(direct) = orient3d_sign(&x) {
+                let want = exact_sign::<crate::exact::predicates::Orient3d, 12>(&x);
+                assert_eq!(direct, want, "{x:?}");
+            }
+            // The normal components are orientations of projections.
+            let corners: [f64; 9] = core::array::from_fn(|i| x[i]);
+            for (direct, want) in [
+                (
+                    crate::exact::predicates::NormalX::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalX, 9>(&corners),
+                ),
+                (
+                    crate::exact::predicates::NormalY::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalY, 9>(&corners),
+                ),
+                (
+                    crate::exact::predicates::NormalZ::exact_sign_direct(&corners),
+                    exact_sign::<crate::exact::predicates::NormalZ, 9>(&corners),
+                ),
+            ] {
+                if let Some(direct) = direct {
+                    assert_eq!(direct, want, "{corners:?}");
+                }
+            }
+            let y: [f64; 6] = [x[0], x[1], x[3], x[4], x[9], x[10]];
+            if let Some(direct) = orient2d_sign(&y) {
+                let want = exact_sign::<crate::exact::predicates::Orient2d, 6>(&y);
+                assert_eq!(direct, want, "{y:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn signs_agree_with_big_integers() {
+        // A small xorshift generator (no dependency on the crate's test support).
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next_f64 = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for round in 0..4000 {
+            let scale = [1.0, 1e-30, 1e30, 3.7e5][round % 4];
+            // Coplanar-ish inputs on a coarse grid, then a few random low bits.
+            let x: [f64; 12] = core::array::from_fn(|i| {
+                let g = (next_f64() * 8.0).floor() - 4.0;
+                let jitter = if round % 3 == 0 && i == 11 {
+                    next_f64() * 1e-12
+                } else {
+                    0.0
+                };
+                (g + jitter) * scale
+            });
+            let ex: [Expansion; 12] = core::array::from_fn(|i| e(x[i]));
+            // The hand-written orientations, wherever they answer.
+            let o3 = exact_sign::<crate::exact::predicates::Orient3d, 12>(&x);
+            if let Some(direct) = orient3d_sign(&x) {
+                assert_eq!(direct, o3, "{x:?}");
+            }
+            let x2: [f64; 6] = core::array::from_fn(|i| x[i + 3]);
+            if let Some(direct) = orient2d_sign(&x2) {
+                assert_eq!(
+                    direct,
+                    exact_sign::<crate::exact::predicates::Orient2d, 6>(&x2),
+                    "{x2:?}"
+                );
+            }
+            for (got, want) in [
+                (
+                    crate::exact::predicates::Orient3d::eval(&ex).sign(),
+                    exact_sign::<crate::exact::predicates::Orient3d, 12>(&x),
+                ),
+                (Sextic::eval(&ex).sign(), exact_sign::<Sextic, 12>(&x)),
+            ] {
+                if let Some(got) = got {
+                    assert_eq!(got, want, "{x:?}");
+                }
+            }
+        }
+    }
+}

@@ -1,6 +1,6 @@
 //! The exact intersection of two closed triangles: a point, a segment or a coplanar convex
-//! polygon, in rationals ([`triangle_intersection`]). The contact class of two closed meshes,
-//! built on it, is [`Collider::contact_class`](crate::collider::Collider::contact_class).
+//! polygon, in rationals ([`triangle_intersection`]). The contact class of two closed meshes is
+//! built on it and on the pieces below (clipping, exact points).
 
 use core::cmp::Ordering;
 

@@ -19,8 +19,8 @@ use crate::query::Intersects;
 use crate::shape::{Segment, Triangle};
 
 /// Whether `p` lies in the closed solid bounded by `triangles` (a closed mesh): on a
-/// triangle, or inside by ray parity (see the module docs). Exact. For meshes, users call
-/// [`Collider::contains_point`](crate::collider::Collider::contains_point).
+/// triangle, or inside by ray parity (see the module docs). Exact. Every triangle is tested:
+/// callers holding a box tree run [`ray_crosses_triangle`] on its candidates instead.
 pub(crate) fn point_in_solid<I>(triangles: I, p: &Point3<f64>) -> bool
 where
     I: IntoIterator<Item = [Point3<f64>; 3]>,

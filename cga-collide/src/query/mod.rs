@@ -15,15 +15,18 @@
 //! * [`segment_triangle_entry`]: the exact parameter at which a segment first meets a triangle
 //!   (the first hit of a segment cast).
 //!
-//! Questions about whole meshes are methods of [`Collider`](crate::collider::Collider).
+//! Each test takes one shape of each kind; the questions about whole meshes are built on them,
+//! over box trees of the triangles.
 //! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
 //! signs come from [`crate::exact`].
 
 pub(crate) mod closest_points;
 pub(crate) mod contact;
 pub(crate) mod containment;
+pub(crate) mod coplanar;
 pub(crate) mod distance;
 pub(crate) mod intersects;
+pub(crate) mod prepared;
 pub(crate) mod segment_entry;
 pub(crate) mod separation;
 pub(crate) mod within_distance;

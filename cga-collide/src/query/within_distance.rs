@@ -45,7 +45,7 @@ use crate::exact::predicates::{
     LineReach, PlaneReach, ReachSign, SegmentDot,
 };
 use crate::exact::{ExactKernel, Kernel, PlaneSide};
-use crate::query::intersects::extremes;
+use crate::query::coplanar::extremes;
 use crate::query::Intersects;
 use crate::shape::bounded::{coords, corner_coords};
 use crate::shape::{Ball, Segment, Sphere, Triangle};

@@ -18,6 +18,7 @@
 //! |---|---|
 //! | [`multivector`] | [`SymMultivector`]: a sparse Cl(4,1) multivector over `Poly` |
 //! | [`notation`] | the thesis's blade names, signs and print order ([`Notation`]) |
+//! | `printing` | [`SymMultivector`] printed in either notation, plain or LaTeX |
 //! | [`scope`] | [`Scope`]: reads expressions in the thesis's notation |
 //! | [`fixture`] | the transcribed formulas ([`FORMULAS`]) and their format ([`Fixture`]) |
 //! | `reading` | the printed or corrected reading of an entry (its definitions and formulas) |
@@ -38,6 +39,7 @@ mod corrections;
 mod defs;
 mod meets;
 mod objects;
+mod printing;
 mod products;
 mod reading;
 mod report;

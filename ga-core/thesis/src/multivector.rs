@@ -13,7 +13,7 @@ use ga_core::reference::blade_product;
 use ga_core::scalar::{Rational, Ring};
 use ga_core::symbolic::Poly;
 
-use crate::notation::{canonical_masks, Notation};
+use crate::notation::canonical_masks;
 
 /// Squares of the basis vectors `e1..e5` of Cl(4,1).
 const METRIC: [i8; 5] = [1, 1, 1, 1, -1];
@@ -22,12 +22,6 @@ const METRIC: [i8; 5] = [1, 1, 1, 1, -1];
 #[derive(Clone, Default, PartialEq, Eq)]
 pub struct SymMultivector {
     pub(crate) coeffs: BTreeMap<u8, Poly>,
-}
-
-impl core::fmt::Debug for SymMultivector {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(&self.to_notation(Notation::Canonical))
-    }
 }
 
 impl SymMultivector {

@@ -330,6 +330,7 @@ impl Scope {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::notation::thesis_name;
 
     /// Counts the products it is asked for, and computes them with the sparse ones.
     struct Counting(std::cell::Cell<usize>);
@@ -375,5 +376,26 @@ mod tests {
         let ex = s.expand(&v).unwrap();
         assert_eq!(ex, s.parse("2(a1^2 + a2^2 + a3^2 + 1) e1").unwrap());
         assert!(s.define("bad", "e1").expansions().is_err());
+    }
+
+    #[test]
+    fn metric_and_names() {
+        let s = Scope::new();
+        assert_eq!(s.parse("ē ē").unwrap(), s.parse("-1").unwrap());
+        assert_eq!(s.parse("n n").unwrap(), SymMultivector::zero());
+        assert_eq!(s.parse("n̄ n̄").unwrap(), SymMultivector::zero());
+        // n·n̄ = 2 (II table), n ∧ n̄ = -2 eē.
+        let nn = s.parse("n nbar").unwrap();
+        assert_eq!(nn.grade(0), s.parse("2").unwrap());
+        assert_eq!(s.parse("n ∧ nbar").unwrap(), s.parse("-2 eē").unwrap());
+        assert_eq!(s.parse("I I").unwrap(), s.parse("-1").unwrap());
+        assert_eq!(thesis_name(0b00101), (-1, "e3e1".to_string()));
+        assert_eq!(thesis_name(0b11000), (1, "eē".to_string()));
+        assert_eq!(s.parse("e3e1ē").unwrap(), s.parse("-e1e3e5").unwrap());
+        for m in 0u8..32 {
+            let (sign, name) = thesis_name(m);
+            let b = s.parse(&name).unwrap();
+            assert_eq!(b.get(m), Poly::from(i64::from(sign)), "{name}");
+        }
     }
 }
