@@ -67,7 +67,7 @@ pub(crate) mod poses;
 mod self_intersection;
 mod serial;
 
-pub use contacts::{Contact, Contacts};
+pub use contacts::{ContactClass, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
 
 use std::sync::OnceLock;
