@@ -75,7 +75,7 @@ pub mod testing;
 
 pub use collider::Collider;
 pub use error::Error;
-pub use query::{Intersects, IntersectsWith};
+pub use query::Intersects;
 pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
 
 pub use ga_core;

@@ -3,7 +3,8 @@
 //!
 //! Run: `cargo run --release -p cga-cli --example adversarial_table`
 
-use cga_collide::exact::{ExactKernel, FloatKernel};
+use cga_collide::exact::ExactKernel;
+use cga_collide::testing::FloatKernel;
 use cga_collide::testing::adversarial::{adversarial_set, Case};
 use cga_collide::testing::baseline;
 

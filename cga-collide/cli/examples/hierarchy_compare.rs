@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use cga_cli::experiment::{calibrate_radius, placement, PAPER_PAIRS};
 use cga_cli::plot::{svg_bar_charts, BarChart};
-use cga_collide::collider::convex::ConvexMeshRef;
+use cga_collide::testing::convex::ConvexMeshRef;
 use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};

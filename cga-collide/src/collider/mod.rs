@@ -57,7 +57,6 @@ mod bounding_tests;
 mod clearance;
 mod contacts;
 mod containment;
-pub mod convex;
 mod distance;
 mod hits;
 mod nearest;
