@@ -43,7 +43,10 @@ fn apart_and_external_tangency() {
     let s = sphere(p(3., 4., 0.), 3.);
     assert!(meets(&ball(p(0., 0., 0.), 2.), &s), "touching from outside");
     assert!(!meets(&ball(p(0., 0., 0.), below(2.)), &s), "one ulp apart");
-    assert!(meets(&ball(p(0., 0., 0.), above(2.)), &s), "one ulp overlapping");
+    assert!(
+        meets(&ball(p(0., 0., 0.), above(2.)), &s),
+        "one ulp overlapping"
+    );
     assert!(!meets(&ball(p(0., 0., 0.), 1.), &s), "apart");
 }
 
@@ -56,8 +59,14 @@ fn a_ball_strictly_inside_the_surface_does_not_meet_it() {
     // Touching the surface from inside: |c1 - c2| + r1 = r2 exactly (5 + 2 = 7).
     let s7 = sphere(p(0., 0., 0.), 7.);
     assert!(meets(&ball(p(3., 4., 0.), 2.), &s7), "internally tangent");
-    assert!(!meets(&ball(p(3., 4., 0.), below(2.)), &s7), "one ulp inside");
-    assert!(meets(&ball(p(3., 4., 0.), above(2.)), &s7), "one ulp across");
+    assert!(
+        !meets(&ball(p(3., 4., 0.), below(2.)), &s7),
+        "one ulp inside"
+    );
+    assert!(
+        meets(&ball(p(3., 4., 0.), above(2.)), &s7),
+        "one ulp across"
+    );
     // A point (radius 0) inside, on and outside the surface.
     assert!(!meets(&ball(p(3., 0., 0.), 0.), &s));
     assert!(meets(&ball(p(3., 4., 0.), 0.), &s));
@@ -73,13 +82,22 @@ fn a_surface_inside_the_ball_or_equal_to_its_boundary_is_met() {
     // A point sphere inside the ball, on its boundary, outside it.
     assert!(meets(&ball(p(0., 0., 0.), 5.), &sphere(p(1., 1., 1.), 0.)));
     assert!(meets(&ball(p(0., 0., 0.), 5.), &sphere(p(3., 4., 0.), 0.)));
-    assert!(!meets(&ball(p(0., 0., 0.), 5.), &sphere(p(3., 4., 1e-300), 0.)));
+    assert!(!meets(
+        &ball(p(0., 0., 0.), 5.),
+        &sphere(p(3., 4., 1e-300), 0.)
+    ));
 }
 
 #[test]
 fn tangencies_hold_at_extreme_scales() {
     // Powers of two, so that the scaled tangencies stay exact.
-    for scale in [2f64.powi(-500), 2f64.powi(-300), 1.0, 2f64.powi(300), 2f64.powi(500)] {
+    for scale in [
+        2f64.powi(-500),
+        2f64.powi(-300),
+        1.0,
+        2f64.powi(300),
+        2f64.powi(500),
+    ] {
         let q = |x: f64, y: f64, z: f64| p(x * scale, y * scale, z * scale);
         let outer = sphere(q(0., 0., 0.), 7. * scale);
         assert!(

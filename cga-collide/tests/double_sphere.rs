@@ -8,10 +8,10 @@ use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSph
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
-use cga_collide::Error;
 use cga_collide::testing::double_sphere::{
     chebyshev_brute, depth, part, smallest_enclosing_ball, smallest_enclosing_ball_brute,
 };
+use cga_collide::Error;
 use cga_collide::{Intersects, Triangle};
 use proptest::prelude::*;
 
@@ -147,7 +147,10 @@ fn validation_rejects_bad_input() {
     let mut w = v.clone();
     w[0].x *= 1.1;
     let err = ConvexPolyhedron::new(w, f.clone()).unwrap_err();
-    assert!(matches!(err, Error::PolyhedronNonPlanarFace { .. }), "{err}");
+    assert!(
+        matches!(err, Error::PolyhedronNonPlanarFace { .. }),
+        "{err}"
+    );
     // Dent: move a vertex inwards along its diagonal (faces stay non-planar -> error).
     let mut w = v.clone();
     w[0] = Point3::from(w[0].coords * 0.5);

@@ -9,8 +9,8 @@ use cga_collide::exact::{exact_sign, ErrF64, ExactKernel, Expansion, Kernel, Pre
 use cga_collide::nalgebra::Point3;
 use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs};
 use cga_collide::testing::baseline;
-use cga_collide::testing::{rational_exact_sign, FloatKernel, IntersectsWith};
 use cga_collide::testing::oracle::{self, Shape};
+use cga_collide::testing::{rational_exact_sign, FloatKernel, IntersectsWith};
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use proptest::prelude::*;
 

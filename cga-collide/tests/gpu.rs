@@ -8,10 +8,10 @@
 
 use cga_collide::collider::{Collider, Mode};
 use cga_collide::gpu::{shader_source, Device, Precision, Query};
-use cga_collide::Error;
 use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::testing::adversarial::{adversarial_set, Case};
+use cga_collide::Error;
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use ga_core::cga::{self, wgsl};
 use naga::valid::{Capabilities, ValidationFlags, Validator};

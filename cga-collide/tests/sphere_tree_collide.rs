@@ -12,10 +12,10 @@ use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::query::intersects_ball_ball;
 use cga_collide::shape::mesh::TriMesh;
-use cga_collide::Ball;
 use cga_collide::testing::sphere_tree::{
     self as methods, ball_contains_box, cell_of, triangle_meets_box,
 };
+use cga_collide::Ball;
 use proptest::prelude::*;
 
 fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
@@ -252,4 +252,3 @@ proptest! {
         prop_assert!(trees || !exact);
     }
 }
-

@@ -3,9 +3,9 @@
 #![allow(clippy::needless_range_loop)]
 
 use cga_collide::hierarchy::sphere_tree::format::{read, read_lenient, write};
-use cga_collide::Error;
 use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
 use cga_collide::testing::sphere_tree as methods;
+use cga_collide::Error;
 use proptest::prelude::*;
 
 const NO_COLLISION: &str = include_str!("fixtures/spheretree/paper_no_collision.txt");

@@ -14,10 +14,10 @@
 use std::hint::black_box;
 
 use cga_cli::experiment::placement;
-use cga_collide::testing::convex::ConvexMeshRef;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_collide::testing::convex::ConvexMeshRef;
 use cga_collide::{Intersects, Triangle};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 

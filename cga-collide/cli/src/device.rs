@@ -87,8 +87,8 @@ mod imp {
     use super::{Answers, Primitive};
     use anyhow::{Context, Result};
     use cga_collide::gpu::{Batch, Device, Precision, Query};
-    use cga_collide::Error;
     use cga_collide::shape::mesh::TriMesh;
+    use cga_collide::Error;
 
     /// An open GPU with the batch pipeline.
     pub struct Gpu(Device);

@@ -38,9 +38,9 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
-use cga_collide::testing::convex::{Certificate, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_collide::testing::convex::{Certificate, ConvexMeshRef};
 
 /// The four pairs of the paper's experiment, in the order of its tables.
 pub const PAPER_PAIRS: [(&str, &str); 4] = [

@@ -288,7 +288,10 @@ impl TryFrom<Sphere> for crate::shape::Sphere {
     fn try_from(s: Sphere) -> Result<Self, Error> {
         const C: &str = "shape::Sphere::try_from(conformal::Sphere)";
         let radius = s.radius().ok_or_else(|| {
-            degenerate(C, "the conformal sphere is imaginary (negative squared radius)")
+            degenerate(
+                C,
+                "the conformal sphere is imaginary (negative squared radius)",
+            )
         })?;
         let centre = s.centre();
         if !(radius.is_finite() && centre.iter().all(|x| x.is_finite())) {

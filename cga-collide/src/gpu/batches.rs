@@ -92,11 +92,7 @@ impl Device {
 
     /// Every pair `(i, j)` of a triangle `i` of `a` and `j` of `b` that intersect, sorted: brute
     /// force over all `|a|·|b|` pairs, as the thesis's GPU batch.
-    pub fn intersecting_pairs(
-        &self,
-        a: &TriMesh,
-        b: &TriMesh,
-    ) -> Result<Batch<(u32, u32)>, Error> {
+    pub fn intersecting_pairs(&self, a: &TriMesh, b: &TriMesh) -> Result<Batch<(u32, u32)>, Error> {
         // The smaller mesh is the loop inside each thread; the larger one is spread over threads.
         let (small, large, swapped) = if a.num_triangles() <= b.num_triangles() {
             (a, b, false)

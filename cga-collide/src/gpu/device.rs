@@ -78,7 +78,9 @@ impl Device {
             required_limits: adapter.limits(),
             ..Default::default()
         }))
-        .map_err(|e| Error::GpuDevice { message: e.to_string() })?;
+        .map_err(|e| Error::GpuDevice {
+            message: e.to_string(),
+        })?;
         let limits = device.limits();
         let max_binding = limits
             .max_storage_buffer_binding_size
@@ -305,14 +307,22 @@ impl Device {
         });
         self.device
             .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| Error::GpuReadback { message: e.to_string() })?;
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?;
         rx.recv()
-            .map_err(|e| Error::GpuReadback { message: e.to_string() })?
-            .map_err(|e| Error::GpuReadback { message: e.to_string() })?;
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?;
         let words = {
             let view = buffer
                 .get_mapped_range(..)
-                .map_err(|e| Error::GpuReadback { message: e.to_string() })?;
+                .map_err(|e| Error::GpuReadback {
+                    message: e.to_string(),
+                })?;
             view.chunks_exact(4)
                 .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
                 .collect()

@@ -37,9 +37,10 @@ pub use distance::{
     exact_distance_triangle_triangle, CertifiedDistance, ExactDistance,
 };
 pub use intersects::{
-    intersects_ball_ball, intersects_ball_sphere, intersects_segment_ball, intersects_segment_segment,
-    intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,
-    intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
+    intersects_ball_ball, intersects_ball_sphere, intersects_segment_ball,
+    intersects_segment_segment, intersects_segment_sphere, intersects_segment_triangle,
+    intersects_sphere_sphere, intersects_triangle_ball, intersects_triangle_sphere,
+    intersects_triangle_triangle, Intersects,
 };
 pub use segment_entry::segment_triangle_entry;
 pub use within_distance::{

@@ -63,10 +63,7 @@ pub(crate) fn newell_normal(vertices: &[Point3<f64>], face: &[usize]) -> Vector3
 impl ConvexPolyhedron {
     /// Validates and builds a convex polyhedron (see the module docs for the checks; the
     /// tolerance is [`TOLERANCE`] times the largest vertex norm).
-    pub fn new(
-        vertices: Vec<Point3<f64>>,
-        faces: Vec<Vec<usize>>,
-    ) -> Result<Self, Error> {
+    pub fn new(vertices: Vec<Point3<f64>>, faces: Vec<Vec<usize>>) -> Result<Self, Error> {
         if vertices.len() < 4 || faces.len() < 4 {
             return Err(Error::PolyhedronTooSmall {
                 vertices: vertices.len(),

@@ -216,10 +216,8 @@ impl<'a> Parser<'a> {
     fn tree(
         &mut self,
         t: usize,
-    ) -> Result<
-        Result<(usize, NestedNode), (String, Option<(usize, NestedNode)>, Vec<Gap>)>,
-        Error,
-    > {
+    ) -> Result<Result<(usize, NestedNode), (String, Option<(usize, NestedNode)>, Vec<Gap>)>, Error>
+    {
         let mut stack: Vec<Open> = Vec::new();
         loop {
             let node_expected = if stack.is_empty() {

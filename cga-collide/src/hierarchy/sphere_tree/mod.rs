@@ -36,9 +36,9 @@ pub use collide::CollisionResult;
 use std::collections::VecDeque;
 use std::ops::Range;
 
-use nalgebra::{Isometry3, Point3};
 use crate::error::Error;
 use crate::exact::ball_inside;
+use nalgebra::{Isometry3, Point3};
 
 /// The state of an octree cell, as the paper's format writes it (`1` partial, `0` full).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -159,11 +159,7 @@ pub struct SphereTree {
 
 impl SphereTree {
     /// A tree of a single ball.
-    pub fn single(
-        centre: [f64; 3],
-        radius: f64,
-        state: CellState,
-    ) -> Result<SphereTree, Error> {
+    pub fn single(centre: [f64; 3], radius: f64, state: CellState) -> Result<SphereTree, Error> {
         Self::from_nested(&NestedNode::leaf(centre, radius, state))
     }
 

@@ -44,10 +44,10 @@
 
 use std::ops::ControlFlow;
 
+use crate::error::Error;
 use crate::parallel::*;
 use nalgebra::Point3;
 use num_traits::Zero;
-use crate::error::Error;
 
 use super::tribox::triangle_meets_box;
 use super::{CellState, SphereTree};
