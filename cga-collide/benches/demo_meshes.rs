@@ -41,7 +41,7 @@ type Res<T> = Result<T, Box<dyn Error + Send + Sync>>;
 /// The library's stage counters for the last run (how many signs each exact stage after the
 /// first `f64` filter decided), printed under `"counters"` in every JSON line.
 fn counters_json() -> Value {
-    let c = cga_collide::exact::stage_counts();
+    let c = cga_collide::testing::stage_counts();
     json!({
         "rescaled_filter": c.rescaled_filter,
         "expansion": c.expansion,
@@ -146,7 +146,7 @@ fn self_one(path: &str, repeat: usize, out_dir: &Path) -> Value {
     while more_runs(runs, repeat, sum) {
         runs += 1;
         let copy = mesh.clone();
-        cga_collide::exact::reset_stage_counts();
+        cga_collide::testing::reset_stage_counts();
         let t0 = Instant::now();
         let collider = Collider::with_strategy(copy, build_strategy());
         let build = ms(t0);
@@ -202,7 +202,7 @@ fn pair_mode(a: &str, b: &str, repeat: usize, out_file: &str) -> Res<()> {
     while more_runs(runs, repeat, sum) {
         runs += 1;
         let (ca, cb) = (ma.clone(), mb.clone());
-        cga_collide::exact::reset_stage_counts();
+        cga_collide::testing::reset_stage_counts();
         let t0 = Instant::now();
         let strategy = build_strategy();
         let (ca, cb) = (

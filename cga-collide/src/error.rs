@@ -1,5 +1,6 @@
 //! The crate's one error type: every way an input can be rejected, saying what was wrong and
-//! where (the argument, the file and line, the vertex or face, the pose's place in a batch).
+//! where (the argument, the file and line, the vertex or face, the tree node, the pose's place
+//! in a batch), and every way a device can fail (feature `gpu`).
 
 use std::fmt;
 
@@ -9,7 +10,8 @@ use thiserror::Error;
 ///
 /// Every variant carries what was wrong and where, so the message (`Display`) is enough for a
 /// user to fix the input. Variants are grouped by the input they reject: bounded shapes and
-/// conformal constructors, meshes and their files, poses of the pose queries, and batches.
+/// conformal constructors, meshes and their files, poses of the pose queries, scenes, convex
+/// polyhedra, sphere hierarchies and their files, the GPU, and batches.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum Error {
@@ -188,6 +190,260 @@ pub enum Error {
         generation: u32,
     },
 
+    // ------------------------------------------------------------ convex polyhedra
+    /// [`ConvexPolyhedron::new`](crate::shape::polyhedron::ConvexPolyhedron::new) was given
+    /// fewer than 4 vertices or 4 faces.
+    #[error("ConvexPolyhedron::new: a polyhedron needs at least 4 vertices and 4 faces (got {vertices} vertices, {faces} faces)")]
+    PolyhedronTooSmall {
+        /// Number of vertices given.
+        vertices: usize,
+        /// Number of faces given.
+        faces: usize,
+    },
+    /// A polyhedron's vertex coordinate is NaN or infinite.
+    #[error("ConvexPolyhedron::new: vertex {vertex} has a non-finite coordinate ({value}); coordinates must be finite numbers")]
+    PolyhedronNonFiniteVertex {
+        /// Index of the vertex.
+        vertex: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A polyhedron's face has fewer than 3 vertices, repeats a vertex or has zero area.
+    #[error("ConvexPolyhedron::new: face {face} is not a polygon: {reason}")]
+    PolyhedronBadFace {
+        /// Index of the face.
+        face: usize,
+        /// What is wrong, e.g. `"fewer than 3 vertices"`.
+        reason: &'static str,
+    },
+    /// A polyhedron's face refers to a vertex that does not exist.
+    #[error("ConvexPolyhedron::new: face {face} refers to vertex {index}, but there are only {vertex_count} vertices (indices are 0-based)")]
+    PolyhedronIndexOutOfRange {
+        /// Index of the face.
+        face: usize,
+        /// The bad vertex index.
+        index: usize,
+        /// Number of vertices.
+        vertex_count: usize,
+    },
+    /// A polyhedron's vertex is used by no face.
+    #[error("ConvexPolyhedron::new: vertex {vertex} belongs to no face; remove it or add the faces that use it")]
+    PolyhedronUnusedVertex {
+        /// Index of the vertex.
+        vertex: usize,
+    },
+    /// A polyhedron's edge is not shared by exactly two faces traversing it in opposite
+    /// directions (the surface is open, non-manifold, or inconsistently oriented).
+    #[error("ConvexPolyhedron::new: edge {from}->{to} of face {face} {reason}")]
+    PolyhedronBadEdge {
+        /// First vertex of the directed edge.
+        from: usize,
+        /// Second vertex of the directed edge.
+        to: usize,
+        /// A face using the edge.
+        face: usize,
+        /// What is wrong.
+        reason: &'static str,
+    },
+    /// A polyhedron's `V - E + F != 2`.
+    #[error("ConvexPolyhedron::new: Euler characteristic V - E + F = {vertices} - {edges} + {faces} is not 2: a convex polyhedron is a closed surface without holes or handles")]
+    PolyhedronEuler {
+        /// Vertices.
+        vertices: usize,
+        /// Edges.
+        edges: usize,
+        /// Faces.
+        faces: usize,
+    },
+    /// A polyhedron's face vertices are not in one plane.
+    #[error("ConvexPolyhedron::new: face {face} is not planar: vertex {vertex} is {distance:e} from the face plane (tolerance {tolerance:e})")]
+    PolyhedronNonPlanarFace {
+        /// Index of the face.
+        face: usize,
+        /// The vertex farthest from the plane.
+        vertex: usize,
+        /// Its distance.
+        distance: f64,
+        /// The tolerance.
+        tolerance: f64,
+    },
+    /// A polyhedron's face polygon is not convex (or is degenerate, or is clockwise seen from
+    /// outside).
+    #[error("ConvexPolyhedron::new: face {face} is not a convex polygon at its corner {corner} (vertex {vertex})")]
+    PolyhedronNonConvexFace {
+        /// Index of the face.
+        face: usize,
+        /// Position of the corner in the face's vertex list.
+        corner: usize,
+        /// The vertex at that corner.
+        vertex: usize,
+    },
+    /// A polyhedron's vertex lies on the outer side of a face plane: the solid is not convex,
+    /// or the face is oriented inwards.
+    #[error("ConvexPolyhedron::new: vertex {vertex} is {distance:e} outside the plane of face {face} (tolerance {tolerance:e}): not convex, or the face is oriented inwards")]
+    PolyhedronNotConvex {
+        /// Index of the face.
+        face: usize,
+        /// The vertex outside.
+        vertex: usize,
+        /// Its distance from the plane (positive = outside).
+        distance: f64,
+        /// The tolerance.
+        tolerance: f64,
+    },
+    /// [`ConvexPolyhedron::by_name`](crate::shape::polyhedron::ConvexPolyhedron::by_name) does
+    /// not know the name.
+    #[error("ConvexPolyhedron::by_name: unknown polyhedron {name:?} (known: cube, octahedron, truncated_octahedron (troctahedron), rh (truncated_icosidodecahedron), diamond)")]
+    UnknownPolyhedron {
+        /// The name given.
+        name: String,
+    },
+
+    // ------------------------------------------------------------ hierarchies
+    /// A double-sphere tree was asked for a level deeper than it supports.
+    #[error("double-sphere tree: level {level} is too deep: choose a level from 0 to {max}")]
+    LevelTooDeep {
+        /// The requested level.
+        level: usize,
+        /// The largest supported level.
+        max: usize,
+    },
+    /// A sphere-tree node's centre coordinate or radius is NaN or infinite.
+    #[error("sphere tree node {node} (breadth-first index): {what} is not finite ({value})")]
+    SphereTreeNonFinite {
+        /// Breadth-first index of the node.
+        node: usize,
+        /// `"centre x"`, `"centre y"`, `"centre z"` or `"radius"`.
+        what: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// A sphere-tree node's radius is negative.
+    #[error("sphere tree node {node} (breadth-first index): radius is negative ({radius})")]
+    SphereTreeNegativeRadius {
+        /// Breadth-first index of the node.
+        node: usize,
+        /// The rejected radius.
+        radius: f64,
+    },
+    /// A sphere-tree node has more than 8 children.
+    #[error("sphere tree node {node} (breadth-first index) has {count} children; an octree node has at most 8")]
+    SphereTreeTooManyChildren {
+        /// Breadth-first index of the node.
+        node: usize,
+        /// Its number of children.
+        count: usize,
+    },
+    /// A sphere tree with more nodes than 32-bit indices address.
+    #[error("{count} nodes is more than a sphere tree holds (2^32 - 1): build a shallower tree")]
+    SphereTreeTooLarge {
+        /// The number of nodes.
+        count: usize,
+    },
+    /// A line of a sphere-tree file is not what the format requires at that point.
+    #[error("line {line}: expected {expected}, found `{found}`")]
+    SphereTreeSyntax {
+        /// The line (1-based).
+        line: usize,
+        /// What the format requires there.
+        expected: String,
+        /// The line's content (comment removed, trimmed).
+        found: String,
+    },
+    /// A sphere-tree file ended while a tree was incomplete.
+    #[error(
+        "input ends after line {line}: expected {expected}; {} of {declared_trees} trees complete{}",
+        complete_trees,
+        gaps.iter().map(|g| format!("; {g}")).collect::<String>()
+    )]
+    SphereTreeUnexpectedEnd {
+        /// The last line of the input.
+        line: usize,
+        /// What the format required next.
+        expected: String,
+        /// The number of trees the first line declares.
+        declared_trees: usize,
+        /// How many trees were complete.
+        complete_trees: usize,
+        /// The open nodes of the incomplete tree, outermost first.
+        gaps: Vec<Gap>,
+    },
+    /// Non-blank content after the last tree a sphere-tree file declares.
+    #[error("line {line}: the {declared_trees} declared trees are complete, but the input goes on with `{found}`")]
+    SphereTreeTrailingContent {
+        /// The line.
+        line: usize,
+        /// The number of trees the first line declares.
+        declared_trees: usize,
+        /// The line's content.
+        found: String,
+    },
+    /// A tree of a sphere-tree file was read but cannot be stored (one of the `SphereTree…`
+    /// variants above says why).
+    #[error("tree starting at line {line}: {source}")]
+    SphereTreeAtLine {
+        /// The line of the tree's root.
+        line: usize,
+        /// What is wrong.
+        source: Box<Error>,
+    },
+    /// An octree sphere tree was asked for a depth above its maximum.
+    #[error("octree sphere tree: depth {depth} is above the maximum {max}: choose a depth from 0 to {max}")]
+    OctreeDepthTooLarge {
+        /// The requested depth.
+        depth: u32,
+        /// The largest supported depth.
+        max: u32,
+    },
+    /// An octree sphere tree was asked of a mesh that is not closed, so "inside" is not
+    /// defined.
+    #[error("octree sphere tree: the mesh is not closed (some edge is used by an odd number of triangles); full and empty cells cannot be told apart: close its holes, or use a closed (watertight) mesh")]
+    OctreeMeshNotClosed,
+    /// The exact octree grid cannot be represented in `f64` (the mesh is tiny compared to its
+    /// distance from the origin, or its coordinates are extreme).
+    #[error("octree sphere tree: the grid of depth {depth} cannot be represented exactly in f64 for a mesh of size {extent} at distance {offset} from the origin: move the mesh near the origin (e.g. scale it into the unit box) or choose a smaller depth")]
+    OctreePrecision {
+        /// The requested depth.
+        depth: u32,
+        /// The largest side of the mesh's bounding box.
+        extent: f64,
+        /// The largest absolute coordinate of the box.
+        offset: f64,
+    },
+
+    // ------------------------------------------------------------ GPU (feature `gpu`)
+    /// No GPU adapter (GPU or software driver) was found.
+    #[error("no GPU adapter found: wgpu found no Vulkan, Metal, DX12 or GL device (only the backends in WGPU_BACKEND if it is set); install the GPU's driver, or on Linux without a GPU Mesa's software Vulkan driver lavapipe (Debian/Ubuntu package mesa-vulkan-drivers)")]
+    NoGpuAdapter,
+    /// The GPU adapter refused to create a device.
+    #[error("the adapter refused to open a device: {message} (check its driver; WGPU_ADAPTER_NAME or WGPU_BACKEND choose another adapter)")]
+    GpuDevice {
+        /// The driver's message.
+        message: String,
+    },
+    /// `f64` was asked for but the GPU has no `SHADER_F64`.
+    #[error("the device {device} has no 64-bit floats in shaders (SHADER_F64); ask for Precision::F32 or the best available (Device::new), which give the same exact answers with more pairs re-decided on the CPU")]
+    GpuNoF64 {
+        /// The device's name.
+        device: String,
+    },
+    /// Reading results back from the GPU failed.
+    #[error("reading results back from the device failed: {message} (the device was lost or ran out of memory; retry, or split the meshes into smaller parts)")]
+    GpuReadback {
+        /// The driver's message.
+        message: String,
+    },
+    /// An input does not fit in one storage buffer of the GPU.
+    #[error("{what} needs {bytes} bytes, more than the device's storage buffer limit of {limit} bytes; split it into parts that fit, or use the CPU queries (cga_collide::query)")]
+    GpuBufferTooLarge {
+        /// Which input.
+        what: &'static str,
+        /// Its size.
+        bytes: u64,
+        /// The device's limit.
+        limit: u64,
+    },
+
     // ------------------------------------------------------------ batches
     /// One item of a batch has no answer; `index` is its position in the slice.
     #[error("pose {index} of the batch: {source}")]
@@ -197,6 +453,34 @@ pub enum Error {
         /// Why it has no answer.
         source: Box<Error>,
     },
+}
+
+/// A node of a sphere-tree file whose children had not all been read when the input ended
+/// (see [`Error::SphereTreeUnexpectedEnd`] and
+/// [`read_lenient`](crate::hierarchy::sphere_tree::format::read_lenient)).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Gap {
+    /// Which tree (0-based).
+    pub tree: usize,
+    /// The line of the node (its `cx cy cz r state` line).
+    pub line: usize,
+    /// The number of children its `k 8` line declares.
+    pub declared: usize,
+    /// How many complete children were read.
+    pub read: usize,
+}
+
+impl fmt::Display for Gap {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "tree {} node at line {} declares {} children, {} complete",
+            self.tree + 1,
+            self.line,
+            self.declared,
+            self.read
+        )
+    }
 }
 
 /// Where in an input something went wrong: the file (or the name given to in-memory data), and

@@ -17,7 +17,7 @@
 //! | [`scene`] | [`scene::Scene`]: many placed colliders, a broad phase that follows them, exact answers for every pair |
 //! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
-//! | `testing` | test oracles, adversarial inputs, plain-`f64` baselines, brute-force twins (feature `testing`) |
+//! | `testing` | test oracles, adversarial inputs, plain-`f64` baselines and signs, exact-stage counters, brute-force twins, the double-sphere experiment's convex reference (feature `testing`) |
 //!
 //! Errors of every kind are one type, [`Error`], saying what was wrong and where.
 //!
@@ -27,7 +27,7 @@
 //! | `parallel` | brute-force scans, pair lists, batches and tree builds over all cores (rayon) | on |
 //! | `builtin-meshes` | the bunny, bunny00 and armadillo fixture meshes compiled in (about 1.8 MB) | off |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact after a CPU re-decision | off |
-//! | `testing` | oracles, adversarial inputs, `f64` baselines, the papers' research variants | off |
+//! | `testing` | oracles, adversarial inputs, `f64` baselines and signs, exact-stage counters, the papers' research variants | off |
 //!
 //! # One calling style
 //! Every question about meshes is a method of the [`Collider`] that holds the built data: in one
@@ -75,7 +75,7 @@ pub mod testing;
 
 pub use collider::Collider;
 pub use error::Error;
-pub use query::{Intersects, IntersectsWith};
+pub use query::Intersects;
 pub use shape::{mesh, Ball, Segment, Sphere, TriMesh, Triangle};
 
 pub use ga_core;

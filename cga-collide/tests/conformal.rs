@@ -1011,3 +1011,37 @@ proptest! {
         prop_assert_eq!(s.side(&xs), expected);
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The bounded sphere (a shape of the pair queries) and the conformal sphere.
+
+#[test]
+fn bounded_and_conformal_spheres_convert_both_ways() {
+    for (c, r) in [
+        (p3(1.0, -2.0, 0.5), 3.0),
+        (p3(0.0, 0.0, 0.0), 0.0),
+        (p3(1e150, 0.0, -1e-150), 2.5e149),
+    ] {
+        let bounded = cga_collide::Sphere::new(c, r).unwrap();
+        let conformal = Sphere::from(bounded);
+        assert_eq!((conformal.centre(), conformal.radius()), (c, Some(r)));
+        // Back without loss.
+        assert_eq!(cga_collide::Sphere::try_from(conformal), Ok(bounded));
+    }
+    // From four points: the f64 centre and radius of the exact sphere.
+    let s = Sphere::from_points([
+        p3(1.0, 0.0, 0.0),
+        p3(-1.0, 0.0, 0.0),
+        p3(0.0, 1.0, 0.0),
+        p3(0.0, 0.0, 1.0),
+    ])
+    .unwrap();
+    let bounded = cga_collide::Sphere::try_from(s).unwrap();
+    assert!(close(bounded.centre(), &Point3::origin(), 1e-15));
+    assert!((bounded.radius() - 1.0).abs() < 1e-15);
+    // An imaginary sphere has no surface to convert to.
+    let imaginary = Sphere::from_centre_squared_radius(Point3::origin(), -4.0).unwrap();
+    let err = cga_collide::Sphere::try_from(imaginary).unwrap_err();
+    assert!(matches!(err, Error::Degenerate { .. }), "{err}");
+    assert!(err.to_string().contains("imaginary"), "{err}");
+}

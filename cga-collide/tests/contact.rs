@@ -1,7 +1,7 @@
 //! Contact classes of closed meshes against the closed-form truth for axis-aligned boxes
 //! (touching faces, edges and vertices included), and the exact intersection geometry.
 
-use cga_collide::collider::{Collider, Contact};
+use cga_collide::collider::{Collider, ContactClass};
 use cga_collide::nalgebra::Point3;
 use cga_collide::query::{self, ContactGeometry};
 use cga_collide::{TriMesh, Triangle};
@@ -14,7 +14,7 @@ fn cuboid(lo: [i32; 3], size: [i32; 3]) -> Collider {
 }
 
 /// The truth for boxes: interiors overlap iff the open intervals overlap on every axis.
-fn truth(a: ([i32; 3], [i32; 3]), b: ([i32; 3], [i32; 3])) -> Contact {
+fn truth(a: ([i32; 3], [i32; 3]), b: ([i32; 3], [i32; 3])) -> ContactClass {
     let (alo, ahi) = (a.0, [a.0[0] + a.1[0], a.0[1] + a.1[1], a.0[2] + a.1[2]]);
     let (blo, bhi) = (b.0, [b.0[0] + b.1[0], b.0[1] + b.1[1], b.0[2] + b.1[2]]);
     let closed = (0..3).all(|k| alo[k] <= bhi[k] && blo[k] <= ahi[k]);
@@ -23,15 +23,15 @@ fn truth(a: ([i32; 3], [i32; 3]), b: ([i32; 3], [i32; 3])) -> Contact {
         (0..3).all(|k| olo[k] < lo[k] && hi[k] < ohi[k])
     };
     if !closed {
-        Contact::Disjoint
+        ContactClass::Disjoint
     } else if strictly_in(alo, ahi, blo, bhi) {
-        Contact::AInsideB
+        ContactClass::AInsideB
     } else if strictly_in(blo, bhi, alo, ahi) {
-        Contact::BInsideA
+        ContactClass::BInsideA
     } else if open {
-        Contact::Penetrating
+        ContactClass::Penetrating
     } else {
-        Contact::Touching
+        ContactClass::Touching
     }
 }
 
@@ -293,7 +293,7 @@ impl Placed {
 /// The truth for two convex solids by the separating-axis theorem, in integers: the candidate
 /// axes are the face normals of both and the cross products of their edges. Some axis with a
 /// gap: disjoint; some axis with only a shared end: touching; otherwise the interiors overlap.
-fn convex_truth(a: &Placed, b: &Placed) -> Contact {
+fn convex_truth(a: &Placed, b: &Placed) -> ContactClass {
     let mut axes = a.normals();
     axes.extend(b.normals());
     for ea in a.edges() {
@@ -307,20 +307,20 @@ fn convex_truth(a: &Placed, b: &Placed) -> Contact {
         let ((alo, ahi), (blo, bhi)) = spans(n);
         ahi < blo || bhi < alo
     }) {
-        return Contact::Disjoint;
+        return ContactClass::Disjoint;
     }
     if axes.iter().any(|&n| {
         let ((alo, ahi), (blo, bhi)) = spans(n);
         ahi == blo || bhi == alo
     }) {
-        return Contact::Touching;
+        return ContactClass::Touching;
     }
     if b.strictly_holds(a) {
-        Contact::AInsideB
+        ContactClass::AInsideB
     } else if a.strictly_holds(b) {
-        Contact::BInsideA
+        ContactClass::BInsideA
     } else {
-        Contact::Penetrating
+        ContactClass::Penetrating
     }
 }
 
@@ -353,10 +353,10 @@ fn an_inscribed_tetrahedron_penetrates_its_cube() {
     // cube: no face crosses a face, no vertex is strictly inside, yet the interiors overlap.
     let cube = place(0, 0, 1, [0, 0, 0], false);
     let tetra = place(2, 0, 1, [0, 0, 0], false);
-    assert_eq!(convex_truth(&tetra, &cube), Contact::Penetrating);
+    assert_eq!(convex_truth(&tetra, &cube), ContactClass::Penetrating);
     assert_eq!(
         (tetra.collider()).contact_class(&cube.collider()),
-        Contact::Penetrating
+        ContactClass::Penetrating
     );
 }
 
@@ -366,10 +366,10 @@ fn an_octahedron_on_the_face_centres_penetrates_its_cube() {
     // faces: only the pieces of the edges show the overlap.
     let cube = place(0, 0, 1, [0, 0, 0], false);
     let octahedron = place(3, 0, 1, [0, 0, 0], true);
-    assert_eq!(convex_truth(&octahedron, &cube), Contact::Penetrating);
+    assert_eq!(convex_truth(&octahedron, &cube), ContactClass::Penetrating);
     assert_eq!(
         (octahedron.collider()).contact_class(&cube.collider()),
-        Contact::Penetrating
+        ContactClass::Penetrating
     );
 }
 
@@ -453,20 +453,20 @@ impl Cells {
 }
 
 /// The truth for polycubes, cell by cell.
-fn cells_truth(a: &Cells, b: &Cells) -> Contact {
+fn cells_truth(a: &Cells, b: &Cells) -> ContactClass {
     let meet =
         a.0.iter()
             .any(|x| b.0.iter().any(|y| (0..3).all(|k| (x[k] - y[k]).abs() <= 1)));
     if !meet {
-        Contact::Disjoint
+        ContactClass::Disjoint
     } else if a.0.is_disjoint(&b.0) {
-        Contact::Touching
+        ContactClass::Touching
     } else if a.strictly_in(b) {
-        Contact::AInsideB
+        ContactClass::AInsideB
     } else if b.strictly_in(a) {
-        Contact::BInsideA
+        ContactClass::BInsideA
     } else {
-        Contact::Penetrating
+        ContactClass::Penetrating
     }
 }
 

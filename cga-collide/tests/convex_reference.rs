@@ -1,10 +1,10 @@
-//! The certified GJK reference (`convex::ConvexMeshRef::collides_solid`) against the exhaustive exact
+//! The certified GJK reference (`testing::convex::ConvexMeshRef::collides_solid`) against the exhaustive exact
 //! mesh test (`Collider::collides_solid`) on random rigid placements of convex solids, and on
 //! touching and nested constructions where the certificates must give way to the exact test.
 
-use cga_collide::collider::convex::{Certificate, ConvexMeshRef};
 use cga_collide::collider::{Collider, Mode};
 use cga_collide::shape::mesh::TriMesh;
+use cga_collide::testing::convex::{Certificate, ConvexMeshRef};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 

@@ -7,10 +7,11 @@ use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::shape::mesh::TriMesh;
-use cga_collide::shape::polyhedron::{ConvexPolyhedron, PolyhedronError};
+use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::testing::double_sphere::{
     chebyshev_brute, depth, part, smallest_enclosing_ball, smallest_enclosing_ball_brute,
 };
+use cga_collide::Error;
 use cga_collide::{Intersects, Triangle};
 use proptest::prelude::*;
 
@@ -112,7 +113,7 @@ fn polyhedra_are_convex_outward_and_unit() {
     }
     assert!(matches!(
         ConvexPolyhedron::by_name("dodecahedron"),
-        Err(PolyhedronError::UnknownName(_))
+        Err(Error::UnknownPolyhedron { .. })
     ));
 }
 
@@ -124,7 +125,7 @@ fn validation_rejects_bad_input() {
     assert!(ConvexPolyhedron::new(v.clone(), f.clone()).is_ok());
     // Open: drop a face.
     let err = ConvexPolyhedron::new(v.clone(), f[1..].to_vec()).unwrap_err();
-    assert!(matches!(err, PolyhedronError::BadEdge { .. }), "{err}");
+    assert!(matches!(err, Error::PolyhedronBadEdge { .. }), "{err}");
     // Inward face.
     let mut g = f.clone();
     g[0].reverse();
@@ -138,7 +139,7 @@ fn validation_rejects_bad_input() {
     assert!(
         matches!(
             err,
-            PolyhedronError::NonConvexFace { .. } | PolyhedronError::NotConvex { .. }
+            Error::PolyhedronNonConvexFace { .. } | Error::PolyhedronNotConvex { .. }
         ),
         "{err}"
     );
@@ -146,7 +147,10 @@ fn validation_rejects_bad_input() {
     let mut w = v.clone();
     w[0].x *= 1.1;
     let err = ConvexPolyhedron::new(w, f.clone()).unwrap_err();
-    assert!(matches!(err, PolyhedronError::NonPlanar { .. }), "{err}");
+    assert!(
+        matches!(err, Error::PolyhedronNonPlanarFace { .. }),
+        "{err}"
+    );
     // Dent: move a vertex inwards along its diagonal (faces stay non-planar -> error).
     let mut w = v.clone();
     w[0] = Point3::from(w[0].coords * 0.5);
@@ -156,14 +160,14 @@ fn validation_rejects_bad_input() {
     g[0][0] = 99;
     assert!(matches!(
         ConvexPolyhedron::new(v.clone(), g).unwrap_err(),
-        PolyhedronError::IndexOutOfRange { index: 99, .. }
+        Error::PolyhedronIndexOutOfRange { index: 99, .. }
     ));
     // Non-finite.
     let mut w = v.clone();
     w[3].y = f64::NAN;
     assert!(matches!(
         ConvexPolyhedron::new(w, f).unwrap_err(),
-        PolyhedronError::NonFinite { vertex: 3, .. }
+        Error::PolyhedronNonFiniteVertex { vertex: 3, .. }
     ));
 }
 

@@ -194,17 +194,19 @@ fn sphere_tree_files_name_the_line() {
 #[cfg(feature = "gpu")]
 #[test]
 fn gpu_errors_say_what_to_install_or_change() {
-    use cga_collide::gpu::GpuError;
+    use cga_collide::Error;
     says(
-        GpuError::NoAdapter,
+        Error::NoGpuAdapter,
         &["no GPU adapter", "WGPU_BACKEND", "mesa-vulkan-drivers"],
     );
     says(
-        GpuError::NoF64("llvmpipe".into()),
+        Error::GpuNoF64 {
+            device: "llvmpipe".into(),
+        },
         &["llvmpipe", "SHADER_F64", "Precision::F32"],
     );
     says(
-        GpuError::TooLarge {
+        Error::GpuBufferTooLarge {
             what: "mesh B",
             bytes: 10,
             limit: 5,

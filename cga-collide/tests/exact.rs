@@ -5,14 +5,13 @@ use cga_collide::exact::predicates::{
     BallBall, EdgeSide, LineDistance, LineLineReach, NormalY, Orient2d, Orient3d, PlaneDistance,
     SphereSphere,
 };
-use cga_collide::exact::{
-    exact_sign, rational_exact_sign, ErrF64, ExactKernel, Expansion, FloatKernel, Kernel, Predicate,
-};
+use cga_collide::exact::{exact_sign, ErrF64, ExactKernel, Expansion, Kernel, Predicate};
 use cga_collide::nalgebra::Point3;
 use cga_collide::testing::adversarial::{adversarial_set, triangle_pairs};
 use cga_collide::testing::baseline;
 use cga_collide::testing::oracle::{self, Shape};
-use cga_collide::{Ball, Intersects, IntersectsWith, Segment, Sphere, Triangle};
+use cga_collide::testing::{rational_exact_sign, FloatKernel, IntersectsWith};
+use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use proptest::prelude::*;
 
 fn pf() -> impl Strategy<Value = Point3<f64>> {

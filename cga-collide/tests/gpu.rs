@@ -7,10 +7,11 @@
 #![cfg(feature = "gpu")]
 
 use cga_collide::collider::{Collider, Mode};
-use cga_collide::gpu::{shader_source, Device, GpuError, Precision, Query};
+use cga_collide::gpu::{shader_source, Device, Precision, Query};
 use cga_collide::mesh::TriMesh;
 use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use cga_collide::testing::adversarial::{adversarial_set, Case};
+use cga_collide::Error;
 use cga_collide::{Ball, Intersects, Segment, Sphere, Triangle};
 use ga_core::cga::{self, wgsl};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -36,7 +37,7 @@ fn device(precision: Precision) -> Option<Device> {
             eprintln!("device: {} ({precision:?})", d.name());
             Some(d)
         }
-        Err(e @ (GpuError::NoAdapter | GpuError::NoF64(_))) => {
+        Err(e @ (Error::NoGpuAdapter | Error::GpuNoF64 { .. })) => {
             if std::env::var_os("CI").is_some() {
                 panic!("CI needs a GPU adapter with f32 and f64 (lavapipe offers both): {e}");
             }

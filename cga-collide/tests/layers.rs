@@ -30,7 +30,6 @@ const ROOT_REEXPORTS: &[(&str, &str)] = &[
     ("Error", "error"),
     ("Collider", "collider"),
     ("Intersects", "query"),
-    ("IntersectsWith", "query"),
     ("mesh", "shape"),
     ("Ball", "shape"),
     ("Segment", "shape"),

@@ -9,11 +9,13 @@ use std::sync::OnceLock;
 use cga_collide::collider::{Collider, Mode};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
-use cga_collide::nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+use cga_collide::nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
+use cga_collide::query::intersects_ball_ball;
 use cga_collide::shape::mesh::TriMesh;
 use cga_collide::testing::sphere_tree::{
     self as methods, ball_contains_box, cell_of, triangle_meets_box,
 };
+use cga_collide::Ball;
 use proptest::prelude::*;
 
 fn arb_node(depth: u32) -> BoxedStrategy<NestedNode> {
@@ -41,8 +43,10 @@ fn agree(x: &SphereTree, y: &SphereTree) -> Result<bool, TestCaseError> {
         if let Some((i, j)) = r.witness {
             let (a, b) = (x.node(i), y.node(j));
             prop_assert!(a.is_leaf() && b.is_leaf());
-            prop_assert!(cga_collide::exact::balls_meet(
-                &a.centre, a.radius, &b.centre, b.radius
+            let ball = |c: [f64; 3], r| Ball::new(Point3::from(c), r).unwrap();
+            prop_assert!(intersects_ball_ball(
+                &ball(a.centre, a.radius),
+                &ball(b.centre, b.radius)
             ));
         }
     }
@@ -246,74 +250,5 @@ proptest! {
         let exact = f.a.collides_solid(&f.b.placed(&iso).unwrap());
         // No false negatives: the leaf balls cover the solids.
         prop_assert!(trees || !exact);
-    }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(4000))]
-
-    /// The `f64` filter of `balls_meet` never disagrees with the exact predicate, on random
-    /// balls, on near-tangent ones and at extreme scales.
-    #[test]
-    fn ball_filter_agrees_with_the_exact_predicate(
-        c1 in prop::array::uniform3(-10.0f64..10.0),
-        dir in prop::array::uniform3(-1.0f64..1.0),
-        r1 in 0.0f64..5.0,
-        r2 in 0.0f64..5.0,
-        wiggle in -4i64..=4,
-        scale in prop::sample::select(vec![1e-300, 1e-160, 1e-10, 1.0, 1e10, 1e150, 1e300]),
-    ) {
-        use cga_collide::exact::{balls_meet, balls_meet_exact};
-        let n = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt().max(1e-3);
-        // Centre 2 at distance r1 + r2 (tangent up to rounding), nudged by a few ulps.
-        let d = (r1 + r2) * (1.0 + wiggle as f64 * f64::EPSILON);
-        let c2 = [c1[0] + dir[0] / n * d, c1[1] + dir[1] / n * d, c1[2] + dir[2] / n * d];
-        let sc = |v: [f64; 3]| v.map(|x| x * scale);
-        for (a, ra, b, rb) in [
-            (sc(c1), r1 * scale, sc(c2), r2 * scale),
-            (sc(c1), r1 * scale, sc(c1.map(|x| x + 3.0)), r2 * scale),
-            (c1, 0.0, c1, 0.0),
-            (c1, 0.0, c2, 0.0),
-        ] {
-            prop_assert_eq!(balls_meet(&a, ra, &b, rb), balls_meet_exact(&a, ra, &b, rb));
-        }
-    }
-}
-
-#[test]
-fn ball_filter_exact_cases() {
-    use cga_collide::exact::{balls_meet, balls_meet_exact};
-    // Integer tangency (3-4-5), just apart, just overlapping, coincident points.
-    let cases = [
-        ([0.0, 0.0, 0.0], 2.0, [3.0, 4.0, 0.0], 3.0, true),
-        (
-            [0.0, 0.0, 0.0],
-            2.0,
-            [3.0, 4.0, 0.0],
-            2.999_999_999_999_999_6,
-            false,
-        ),
-        (
-            [0.0, 0.0, 0.0],
-            2.0,
-            [3.0, 4.0, 0.0],
-            3.000_000_000_000_000_4,
-            true,
-        ),
-        ([1.0, 1.0, 1.0], 0.0, [1.0, 1.0, 1.0], 0.0, true),
-        ([1.0, 1.0, 1.0], 0.0, [1.0, 1.0, 2.0], 0.0, false),
-        ([1e300, 0.0, 0.0], 1e300, [-1e300, 0.0, 0.0], 1e300, true),
-    ];
-    for (c1, r1, c2, r2, want) in cases {
-        assert_eq!(
-            balls_meet_exact(&c1, r1, &c2, r2),
-            want,
-            "{c1:?} {r1} {c2:?} {r2}"
-        );
-        assert_eq!(
-            balls_meet(&c1, r1, &c2, r2),
-            want,
-            "{c1:?} {r1} {c2:?} {r2}"
-        );
     }
 }

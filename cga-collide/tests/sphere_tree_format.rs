@@ -2,9 +2,10 @@
 //! errors on malformed and truncated input, and no panics on any input.
 #![allow(clippy::needless_range_loop)]
 
-use cga_collide::hierarchy::sphere_tree::format::{read, read_lenient, write, FormatError};
+use cga_collide::hierarchy::sphere_tree::format::{read, read_lenient, write};
 use cga_collide::hierarchy::sphere_tree::{CellState, NestedNode, SphereTree};
 use cga_collide::testing::sphere_tree as methods;
+use cga_collide::Error;
 use proptest::prelude::*;
 
 const NO_COLLISION: &str = include_str!("fixtures/spheretree/paper_no_collision.txt");
@@ -31,7 +32,7 @@ fn raw_extraction_is_rejected_at_the_marker_line() {
     // The marker glued to `0 8` makes that line unreadable: the reader says where and what.
     for (raw, line) in [(NO_COLLISION_RAW, 100), (COLLISION_RAW, 92)] {
         match read(raw) {
-            Err(FormatError::Syntax {
+            Err(Error::SphereTreeSyntax {
                 line: l,
                 expected,
                 found,
@@ -198,7 +199,7 @@ fn every_truncation_is_reported_precisely() {
             continue;
         }
         match strict {
-            Err(FormatError::UnexpectedEnd {
+            Err(Error::SphereTreeUnexpectedEnd {
                 declared_trees,
                 complete_trees,
                 gaps,
@@ -240,7 +241,7 @@ fn missing_children_line_and_leaf_are_located() {
     lines.remove(6);
     let err = read(&lines.join("\n")).unwrap_err();
     assert!(
-        matches!(&err, FormatError::Syntax { line: 7, expected, .. } if expected.contains("node at line 6")),
+        matches!(&err, Error::SphereTreeSyntax { line: 7, expected, .. } if expected.contains("node at line 6")),
         "{err}"
     );
     // Drop a whole leaf (two lines): every later node shifts up one place, the jeep's root is
@@ -252,7 +253,7 @@ fn missing_children_line_and_leaf_are_located() {
     let text = lines.join("\n");
     let err = read(&text).unwrap_err();
     match &err {
-        FormatError::UnexpectedEnd {
+        Error::SphereTreeUnexpectedEnd {
             complete_trees,
             gaps,
             expected,

@@ -86,8 +86,9 @@ pub fn reject_unsupported(given: &[&str]) -> Result<()> {
 mod imp {
     use super::{Answers, Primitive};
     use anyhow::{Context, Result};
-    use cga_collide::gpu::{Batch, Device, GpuError, Precision, Query};
+    use cga_collide::gpu::{Batch, Device, Precision, Query};
     use cga_collide::shape::mesh::TriMesh;
+    use cga_collide::Error;
 
     /// An open GPU with the batch pipeline.
     pub struct Gpu(Device);
@@ -105,7 +106,7 @@ mod imp {
         pub fn open() -> Result<Gpu> {
             match Device::new() {
                 Ok(d) => Ok(Gpu(d)),
-                Err(e @ GpuError::NoAdapter) => Err(anyhow::anyhow!(
+                Err(e @ Error::NoGpuAdapter) => Err(anyhow::anyhow!(
                     "--device gpu: {e}{}; or run with --device cpu (same answers)",
                     std::env::var("WGPU_BACKEND")
                         .map(|b| format!(

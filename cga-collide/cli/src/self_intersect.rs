@@ -39,10 +39,10 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     let collider = Collider::with_strategy(mesh, BuildStrategy::Morton);
     let build = start.elapsed();
     let start = Instant::now();
-    cga_collide::exact::reset_stage_counts();
+    cga_collide::testing::reset_stage_counts();
     let pairs = collider.self_intersections();
     let millis = start.elapsed().as_secs_f64() * 1e3;
-    let stages = cga_collide::exact::stage_counts();
+    let stages = cga_collide::testing::stage_counts();
     if let Some(path) = &args.pairs {
         let mut out = std::io::BufWriter::new(
             fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,

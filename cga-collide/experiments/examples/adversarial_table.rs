@@ -3,9 +3,10 @@
 //!
 //! Run: `cargo run --release -p cga-experiments --example adversarial_table`
 
-use cga_collide::exact::{ExactKernel, FloatKernel};
+use cga_collide::exact::ExactKernel;
 use cga_collide::testing::adversarial::{adversarial_set, Case};
 use cga_collide::testing::baseline;
+use cga_collide::testing::FloatKernel;
 
 /// The seed and size of the fixed set.
 const SEED: u64 = 2026;

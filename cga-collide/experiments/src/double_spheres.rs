@@ -164,8 +164,7 @@ pub fn run(args: DoubleSpheresArgs) -> Result<()> {
                     b: DoubleSphereTree::build(&pb, s.level, s.inner)?,
                 })
             })
-            .collect::<Result<Vec<_>, cga_collide::hierarchy::double_sphere::DoubleSphereError>>(
-            )?;
+            .collect::<Result<Vec<_>, cga_collide::Error>>()?;
         let paper_row = PAPER_PAIRS.iter().position(|(x, y)| {
             let same = |p: &str, q: &str| {
                 ConvexPolyhedron::by_name(p).ok().map(|s| s.num_vertices())

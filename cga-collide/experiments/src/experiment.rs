@@ -1,6 +1,6 @@
 //! The experiment of the double-sphere paper (§5, Tables 2 and 3), run on the exact
 //! hierarchy of [`cga_collide::hierarchy::double_sphere`] and checked, placement by placement, against the
-//! independent exact reference [`cga_collide::collider::convex::ConvexMeshRef::collides_solid`].
+//! independent exact reference [`cga_collide::testing::convex::ConvexMeshRef::collides_solid`].
 //!
 //! Two convex polyhedra (circumradius 1, see [`cga_collide::shape::polyhedron`]) are placed with their
 //! centres uniformly at random inside an *experiment sphere* and with uniformly random
@@ -27,7 +27,7 @@
 //! assert_eq!(result.mismatches.len(), 0);
 //! let colliding = result.reference_collisions as f64 / 1_000.0;
 //! assert!((0.35..0.65).contains(&colliding));
-//! # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use std::f64::consts::PI;
@@ -38,9 +38,9 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use rayon::prelude::*;
 
-use cga_collide::collider::convex::{Certificate, ConvexMeshRef};
 use cga_collide::hierarchy::double_sphere::{Decision, DoubleSphereTree};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
+use cga_collide::testing::convex::{Certificate, ConvexMeshRef};
 
 /// The four pairs of the paper's experiment, in the order of its tables.
 pub const PAPER_PAIRS: [(&str, &str); 4] = [

@@ -2,9 +2,9 @@
 //! ([`Collider::contacts`]) and the contact class ([`Collider::contact_class`]).
 //!
 //! # The class of two closed meshes
-//! [`contact_class`] answers [`Contact::Disjoint`], [`Contact::Touching`] (the surfaces meet,
-//! the interiors do not), [`Contact::Penetrating`] (the interiors overlap and the surfaces
-//! meet) or one inside the other ([`Contact::AInsideB`], [`Contact::BInsideA`], surfaces apart).
+//! [`contact_class`] answers [`ContactClass::Disjoint`], [`ContactClass::Touching`] (the surfaces meet,
+//! the interiors do not), [`ContactClass::Penetrating`] (the interiors overlap and the surfaces
+//! meet) or one inside the other ([`ContactClass::AInsideB`], [`ContactClass::BInsideA`], surfaces apart).
 //! Every step is exact.
 //! * Without surface contact (exact pair test) the class is disjoint or inside (exact
 //!   point-in-solid of one vertex).
@@ -99,15 +99,15 @@ impl Collider {
     /// The contact class of two closed meshes (in one frame), see the module docs.
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::Contact, Collider, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::ContactClass, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let at = |x| cube.placed(&Isometry3::translation(x, 0.0, 0.0)).unwrap();
-    /// assert_eq!(cube.contact_class(&at(1.0)), Contact::Touching);
-    /// assert_eq!(cube.contact_class(&at(0.5)), Contact::Penetrating);
-    /// assert_eq!(cube.contact_class(&at(1.5)), Contact::Disjoint);
+    /// assert_eq!(cube.contact_class(&at(1.0)), ContactClass::Touching);
+    /// assert_eq!(cube.contact_class(&at(0.5)), ContactClass::Penetrating);
+    /// assert_eq!(cube.contact_class(&at(1.5)), ContactClass::Disjoint);
     /// # Ok::<(), cga_collide::Error>(())
     /// ```
-    pub fn contact_class(&self, other: &Collider) -> Contact {
+    pub fn contact_class(&self, other: &Collider) -> ContactClass {
         classify(self, other)
     }
 
@@ -116,11 +116,11 @@ impl Collider {
     /// proportional to their size per pose; the pose checks are those of every `_at` query).
     ///
     /// ```
-    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::Contact, Collider, TriMesh};
+    /// use cga_collide::{nalgebra::{Isometry3, Point3}, collider::ContactClass, Collider, TriMesh};
     /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
     /// let here = Isometry3::identity();
     /// let class = cube.contact_class_at(&here, &cube, &Isometry3::translation(1.0, 0.0, 0.0))?;
-    /// assert_eq!(class, Contact::Touching);
+    /// assert_eq!(class, ContactClass::Touching);
     /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn contact_class_at(
@@ -128,7 +128,7 @@ impl Collider {
         pose_a: &Isometry3<f64>,
         other: &Collider,
         pose_b: &Isometry3<f64>,
-    ) -> Result<Contact, Error> {
+    ) -> Result<ContactClass, Error> {
         let (a, b) = self.placed_pair(pose_a, other, pose_b)?;
         Ok(a.contact_class(&b))
     }
@@ -136,7 +136,7 @@ impl Collider {
 
 /// How two closed meshes are placed relative to each other (see [`Collider::contact_class`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Contact {
+pub enum ContactClass {
     /// The solids do not meet.
     Disjoint,
     /// The surfaces meet and no interior overlap was found (see the module docs).
@@ -149,16 +149,16 @@ pub enum Contact {
     BInsideA,
 }
 
-impl Contact {
+impl ContactClass {
     /// The name used in the CLI's JSON: `disjoint`, `touching`, `penetrating`, `a_inside_b`,
     /// `b_inside_a`.
     pub fn name(self) -> &'static str {
         match self {
-            Contact::Disjoint => "disjoint",
-            Contact::Touching => "touching",
-            Contact::Penetrating => "penetrating",
-            Contact::AInsideB => "a_inside_b",
-            Contact::BInsideA => "b_inside_a",
+            ContactClass::Disjoint => "disjoint",
+            ContactClass::Touching => "touching",
+            ContactClass::Penetrating => "penetrating",
+            ContactClass::AInsideB => "a_inside_b",
+            ContactClass::BInsideA => "b_inside_a",
         }
     }
 }
@@ -403,7 +403,7 @@ fn some_edge_enters(a: &ContactSide, b: &Collider, pairs: &HashMap<u32, Vec<u32>
 }
 
 /// The contact class (see the module docs).
-fn classify(a: &Collider, b: &Collider) -> Contact {
+fn classify(a: &Collider, b: &Collider) -> ContactClass {
     let pairs = a.intersecting_pairs(b);
     let inside = |inner: &Collider, outer: &Collider| {
         inner
@@ -414,11 +414,11 @@ fn classify(a: &Collider, b: &Collider) -> Contact {
     };
     if pairs.is_empty() {
         return if inside(a, b) {
-            Contact::AInsideB
+            ContactClass::AInsideB
         } else if inside(b, a) {
-            Contact::BInsideA
+            ContactClass::BInsideA
         } else {
-            Contact::Disjoint
+            ContactClass::Disjoint
         };
     }
     use crate::parallel::*;
@@ -431,7 +431,7 @@ fn classify(a: &Collider, b: &Collider) -> Contact {
             .is_some_and(|g| contact_overlaps(&sa, &sb, i, j, &g))
     });
     if overlapping {
-        return Contact::Penetrating;
+        return ContactClass::Penetrating;
     }
     // A vertex strictly inside the other solid (inside and not on its surface).
     let strictly = |inner: &Collider, outer: &Collider| {
@@ -445,7 +445,7 @@ fn classify(a: &Collider, b: &Collider) -> Contact {
         })
     };
     if strictly(a, b) || strictly(b, a) {
-        return Contact::Penetrating;
+        return ContactClass::Penetrating;
     }
     let by_first = |flip: bool| {
         let mut map: HashMap<u32, Vec<u32>> = HashMap::new();
@@ -456,8 +456,8 @@ fn classify(a: &Collider, b: &Collider) -> Contact {
         map
     };
     if some_edge_enters(&sa, b, &by_first(false)) || some_edge_enters(&sb, a, &by_first(true)) {
-        Contact::Penetrating
+        ContactClass::Penetrating
     } else {
-        Contact::Touching
+        ContactClass::Touching
     }
 }

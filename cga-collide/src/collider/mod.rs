@@ -57,7 +57,6 @@ mod bounding_tests;
 mod clearance;
 mod contacts;
 mod containment;
-pub mod convex;
 mod distance;
 mod hits;
 mod nearest;
@@ -67,7 +66,7 @@ pub(crate) mod poses;
 mod self_intersection;
 mod serial;
 
-pub use contacts::{Contact, Contacts};
+pub use contacts::{ContactClass, Contacts};
 pub use pose::{pose_from_degrees, PosePair};
 
 use std::sync::OnceLock;

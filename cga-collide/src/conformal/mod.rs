@@ -10,8 +10,9 @@
 //! | [`Plane`] | `P1 ∧ P2 ∧ P3 ∧ n_inf` (grade 4) | `n + d n_inf` (grade 1) |
 //! | [`Sphere`] | `P1 ∧ P2 ∧ P3 ∧ P4` (grade 4) | `F(c) − r² n_inf` (grade 1) |
 //!
-//! (This `Sphere` is the conformal sphere, a different type from the bounded
-//! [`crate::Sphere`]; write `conformal::Sphere`.)
+//! (This `Sphere` is the conformal sphere, with meets and versors, a different type from the
+//! bounded [`crate::Sphere`] that the pair queries take; write `conformal::Sphere`. `From`
+//! converts a bounded sphere exactly, `TryFrom` goes back, failing for an imaginary sphere.)
 //!
 //! # Conventions
 //! * `n_inf = e4 + e5`, `n_0 = (e5 − e4)/2`, `dual(A) = A I⁻¹`, `undual(A) = A I`

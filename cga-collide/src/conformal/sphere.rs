@@ -257,6 +257,50 @@ impl Sphere {
     }
 }
 
+impl From<crate::shape::Sphere> for Sphere {
+    /// The conformal sphere of a bounded sphere's centre and radius, exactly (radius 0: the
+    /// point sphere). [`crate::shape::Sphere`] is the surface as a shape of the pair queries;
+    /// this type is its conformal blade, with meets and versors.
+    ///
+    /// ```
+    /// use cga_collide::{conformal, nalgebra::Point3, Sphere};
+    /// let s = Sphere::new(Point3::new(1.0, 2.0, 3.0), 0.5)?;
+    /// let c = conformal::Sphere::from(s);
+    /// assert_eq!((c.centre(), c.radius()), (Point3::new(1.0, 2.0, 3.0), Some(0.5)));
+    /// assert_eq!(Sphere::try_from(c)?, s);
+    /// // An imaginary sphere has no surface.
+    /// let i = conformal::Sphere::from_centre_squared_radius(Point3::origin(), -1.0)?;
+    /// assert!(Sphere::try_from(i).is_err());
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    fn from(s: crate::shape::Sphere) -> Sphere {
+        Sphere::build(SphereDef::CentreRadius(*s.centre(), s.radius()))
+    }
+}
+
+impl TryFrom<Sphere> for crate::shape::Sphere {
+    type Error = Error;
+    /// The bounded sphere (surface) with the conformal sphere's centre and radius: the same
+    /// numbers for a sphere built from a centre and radius (so the round trip from
+    /// [`crate::shape::Sphere`] is exact), their `f64` roundings for one built from points, a
+    /// squared radius or a blade. Fails with [`Error::Degenerate`] for an imaginary sphere
+    /// (negative squared radius) and when the centre or radius does not fit in `f64`.
+    fn try_from(s: Sphere) -> Result<Self, Error> {
+        const C: &str = "shape::Sphere::try_from(conformal::Sphere)";
+        let radius = s.radius().ok_or_else(|| {
+            degenerate(
+                C,
+                "the conformal sphere is imaginary (negative squared radius)",
+            )
+        })?;
+        let centre = s.centre();
+        if !(radius.is_finite() && centre.iter().all(|x| x.is_finite())) {
+            return Err(degenerate(C, "the centre or radius is not finite in f64"));
+        }
+        crate::shape::Sphere::new(centre, radius)
+    }
+}
+
 impl InnerVector for Sphere {
     fn inner_vector<T: CertifiedScalar>(&self) -> Vector<T> {
         self.ipns_in()

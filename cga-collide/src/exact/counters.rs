@@ -3,7 +3,8 @@
 //!
 //! Only the stages after the first `f64` filter count (they cost tens of nanoseconds or more,
 //! so a relaxed atomic increment is noise there); the first filter is the hot path and is left
-//! uncounted. The counters are process-wide and never reset by the crate itself.
+//! uncounted. The counters are process-wide and never reset by the crate itself; they are
+//! read through `testing::stage_counts` (feature `testing`).
 
 use core::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -13,6 +14,7 @@ static BIG_INTEGER: AtomicU64 = AtomicU64::new(0);
 
 /// The number of signs decided by each stage after the first `f64` filter, since the process
 /// started or the last [`reset_stage_counts`].
+#[cfg(feature = "testing")]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct StageCounts {
     /// Decided by the `f64` filter again, after scaling the inputs to unit size.
@@ -24,6 +26,7 @@ pub struct StageCounts {
 }
 
 /// The counters now.
+#[cfg(feature = "testing")]
 pub fn stage_counts() -> StageCounts {
     StageCounts {
         rescaled_filter: RESCALED.load(Relaxed),
@@ -33,6 +36,7 @@ pub fn stage_counts() -> StageCounts {
 }
 
 /// Sets every counter to zero (e.g. between the meshes of a benchmark).
+#[cfg(feature = "testing")]
 pub fn reset_stage_counts() {
     RESCALED.store(0, Relaxed);
     EXPANSION.store(0, Relaxed);

@@ -11,11 +11,7 @@
 //!    `1e±150` whose products would underflow or overflow;
 //! 3. if still uncertain, exactly: the inputs are scaled to integers and the same code runs on
 //!    [`BigInteger`] (exact rational arithmetic with the common denominator factored out; the
-//!    tests cross-check it against `ga_core::scalar::Rational` evaluation,
-//!    [`rational_exact_sign`]).
-//!
-//! [`FloatKernel`] evaluates the same code on plain `f64` and believes the result: it is the
-//! "no exact fall-back" variant used to measure what rounding costs.
+//!    tests cross-check it against `ga_core::scalar::Rational` evaluation).
 
 use crate::exact::vector::{cross, sub};
 use core::cmp::Ordering;
@@ -66,10 +62,6 @@ pub trait Kernel {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ExactKernel;
 
-/// Plain `f64` signs without error bound or fall-back (wrong near zero; for comparison only).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct FloatKernel;
-
 impl Kernel for ExactKernel {
     type Plane = ExactPlane;
     #[inline]
@@ -104,61 +96,9 @@ impl Kernel for ExactKernel {
     }
 }
 
-impl Kernel for FloatKernel {
-    type Plane = FloatPlane;
-    #[inline]
-    fn sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
-        P::eval(x).partial_cmp(&0.0).unwrap_or(Ordering::Equal)
-    }
-    #[inline]
-    fn plane(p: &[[f64; 3]; 3]) -> FloatPlane {
-        let u = sub(&p[1], &p[0]);
-        let v = sub(&p[2], &p[0]);
-        FloatPlane {
-            p: *p,
-            n: cross(&u, &v),
-        }
-    }
-}
-
-#[inline(always)]
-fn sign_of(x: f64) -> Ordering {
-    x.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
-}
-
-/// A triangle's plane in plain `f64` ([`FloatKernel`]).
-#[derive(Debug, Clone, Copy)]
-pub struct FloatPlane {
-    p: [[f64; 3]; 3],
-    n: [f64; 3],
-}
-
-impl PlaneSide for FloatPlane {
-    #[inline]
-    fn side(&self, q: &[f64; 3]) -> Ordering {
-        let w = sub(q, &self.p[0]);
-        sign_of(w[0] * self.n[0] + w[1] * self.n[1] + w[2] * self.n[2])
-    }
-    #[inline]
-    fn sides(&self, other: &Self) -> [Ordering; 3] {
-        self.sides_of(&other.p)
-    }
-    #[inline]
-    fn sides_of(&self, q: &[[f64; 3]; 3]) -> [Ordering; 3] {
-        [self.side(&q[0]), self.side(&q[1]), self.side(&q[2])]
-    }
-    fn is_degenerate(&self) -> bool {
-        self.n == [0.0; 3]
-    }
-    fn projection_axis(&self) -> Option<usize> {
-        let k = largest_component(&self.n);
-        (self.n[k] != 0.0).then_some(k)
-    }
-}
-
 /// The index of the component of largest magnitude.
 #[inline]
-fn largest_component(n: &[f64; 3]) -> usize {
+pub(crate) fn largest_component(n: &[f64; 3]) -> usize {
     let a = [n[0].abs(), n[1].abs(), n[2].abs()];
     if a[0] >= a[1] && a[0] >= a[2] {
         0

@@ -13,12 +13,10 @@
 //! |---|---|
 //! | [`ErrF64`] | `f64` value with a running error bound |
 //! | [`Expansion`] | exact sums and products of `f64` in fixed storage |
-//! | [`stage_counts`] | how many signs each stage after the first filter decided |
 //! | [`Predicate`], [`exact_sign`] | a polynomial predicate and its exact sign |
 //! | [`predicates`] | every polynomial predicate of the crate (orientation, distances, spheres) |
-//! | [`Kernel`], [`ExactKernel`], [`FloatKernel`] | how the algorithms of [`crate::query`] decide signs: exactly, or in plain `f64` (for comparison) |
+//! | [`Kernel`], [`ExactKernel`] | how the algorithms of [`crate::query`] decide signs |
 //! | [`ExactPlane`] | a triangle's plane with its filter data, computed once per triangle |
-//! | [`balls_meet`], [`ball_inside`] | closed-ball tests on raw centres and radii, with a semi-static filter |
 //! | [`CertifiedScalar`], [`decide`] | the same staging for whole conformal computations ([`crate::conformal`]) |
 //!
 //! Nothing here depends on any other module of the crate.
@@ -26,20 +24,17 @@
 mod balls;
 mod bounded_f64;
 mod certified;
-mod counters;
+pub(crate) mod counters;
 pub(crate) mod expansion;
-mod kernel;
+pub(crate) mod kernel;
 pub mod predicates;
-mod sign;
+pub(crate) mod sign;
 pub(crate) mod vector;
 
-pub use balls::{ball_inside, balls_meet, balls_meet_exact};
+pub(crate) use balls::{ball_inside, balls_meet};
 pub use bounded_f64::ErrF64;
 pub use certified::{all_zero, decide, CertifiedScalar};
-pub use counters::{reset_stage_counts, stage_counts, StageCounts};
 pub use expansion::Expansion;
-pub use kernel::{ExactKernel, ExactPlane, FloatKernel, FloatPlane, Kernel, PlaneSide};
+pub use kernel::{ExactKernel, ExactPlane, Kernel, PlaneSide};
 pub(crate) use sign::decode;
-pub use sign::{
-    exact_sign, integer_scaled, rational_exact_sign, rational_sign, BigInteger, Predicate,
-};
+pub use sign::{exact_sign, integer_scaled, rational_sign, BigInteger, Predicate};

@@ -54,6 +54,7 @@ pub fn exact_sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
 
 /// The exact sign of `P` at `x` by [`Rational`] evaluation of the unscaled inputs (slow;
 /// reference for the tests).
+#[cfg(feature = "testing")]
 pub fn rational_exact_sign<P: Predicate<N>, const N: usize>(x: &[f64; N]) -> Ordering {
     let q: [Rational; N] = core::array::from_fn(|i| {
         ga_core::scalar::rational_from_f64(x[i]).unwrap_or_else(<Rational as Ring>::zero)

@@ -7,7 +7,8 @@ use crate::mesh::TriMesh;
 use crate::{Intersects, Triangle};
 
 use super::device::TESTS_PER_DISPATCH;
-use super::{Device, GpuError, Query};
+use super::{Device, Query};
+use crate::error::Error;
 
 /// The answers of one batch.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,7 +39,7 @@ impl<T> Batch<T> {
 impl Device {
     /// The triangles of `mesh` that meet `query`, sorted: brute force, every triangle tested
     /// on the device, the flagged ones re-decided exactly on the CPU.
-    pub fn hits(&self, query: &Query, mesh: &TriMesh) -> Result<Batch<u32>, GpuError> {
+    pub fn hits(&self, query: &Query, mesh: &TriMesh) -> Result<Batch<u32>, Error> {
         let queries = [query.packed()];
         let batch = self.run(query.kind(), &queries, mesh, None, |_, j| {
             query.intersects(&triangle(mesh, j))
@@ -53,7 +54,7 @@ impl Device {
 
     /// The indices `k` of the pairs `pairs[k]` that intersect, sorted: arbitrary
     /// shape–triangle pairs in one batch per kind of shape.
-    pub fn pair_hits(&self, pairs: &[(Query, Triangle)]) -> Result<Batch<usize>, GpuError> {
+    pub fn pair_hits(&self, pairs: &[(Query, Triangle)]) -> Result<Batch<usize>, Error> {
         let mut out = Batch {
             hits: Vec::new(),
             tested: 0,
@@ -91,11 +92,7 @@ impl Device {
 
     /// Every pair `(i, j)` of a triangle `i` of `a` and `j` of `b` that intersect, sorted: brute
     /// force over all `|a|·|b|` pairs, as the thesis's GPU batch.
-    pub fn intersecting_pairs(
-        &self,
-        a: &TriMesh,
-        b: &TriMesh,
-    ) -> Result<Batch<(u32, u32)>, GpuError> {
+    pub fn intersecting_pairs(&self, a: &TriMesh, b: &TriMesh) -> Result<Batch<(u32, u32)>, Error> {
         // The smaller mesh is the loop inside each thread; the larger one is spread over threads.
         let (small, large, swapped) = if a.num_triangles() <= b.num_triangles() {
             (a, b, false)
@@ -125,7 +122,7 @@ impl Device {
         a: &TriMesh,
         b: &TriMesh,
         candidates: &[(u32, u32)],
-    ) -> Result<Batch<(u32, u32)>, GpuError> {
+    ) -> Result<Batch<(u32, u32)>, Error> {
         let queries: Vec<[f64; 12]> = (0..a.num_triangles())
             .map(|i| Query::Triangle(triangle(a, i as u32)).packed())
             .collect();
@@ -143,7 +140,7 @@ impl Device {
         mesh: &TriMesh,
         pairs: Option<&[(u32, u32)]>,
         exact: impl Fn(u32, u32) -> bool + Sync,
-    ) -> Result<Batch<(u32, u32)>, GpuError> {
+    ) -> Result<Batch<(u32, u32)>, Error> {
         let p = self.precision;
         let n_tri = mesh.num_triangles();
         let query_safe: Vec<bool> = queries
@@ -162,7 +159,7 @@ impl Device {
             .collect();
         let query_bytes = (queries.len() * 12 * p.bytes()) as u64;
         if query_bytes > self.max_binding {
-            return Err(GpuError::TooLarge {
+            return Err(Error::GpuBufferTooLarge {
                 what: "the query data",
                 bytes: query_bytes,
                 limit: self.max_binding,
@@ -205,7 +202,7 @@ impl Device {
                 tested = pairs.len() as u64;
                 let tri_bytes = (n_tri * 9 * p.bytes()) as u64;
                 if tri_bytes > self.max_binding {
-                    return Err(GpuError::TooLarge {
+                    return Err(Error::GpuBufferTooLarge {
                         what: "the mesh",
                         bytes: tri_bytes,
                         limit: self.max_binding,

@@ -8,7 +8,8 @@ use std::sync::mpsc;
 
 use wgpu::util::DeviceExt as _;
 
-use super::{shader_source, GpuError, Precision};
+use super::{shader_source, Precision};
+use crate::error::Error;
 
 /// Tests per dispatch, at most: keeps each dispatch short (GPU watchdogs).
 pub(super) const TESTS_PER_DISPATCH: u64 = 1 << 26;
@@ -44,24 +45,24 @@ pub(super) struct Dispatched {
 impl Device {
     /// The first adapter wgpu finds (high-performance preference; `WGPU_BACKEND` and
     /// `WGPU_ADAPTER_NAME` select one), in `f64` when it has `SHADER_F64`, else `f32`.
-    pub fn new() -> Result<Device, GpuError> {
+    pub fn new() -> Result<Device, Error> {
         Self::with_precision(None)
     }
 
     /// As [`new`](Self::new) with a chosen precision (`None`: the best available).
-    pub fn with_precision(precision: Option<Precision>) -> Result<Device, GpuError> {
+    pub fn with_precision(precision: Option<Precision>) -> Result<Device, Error> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
             power_preference: wgpu::PowerPreference::HighPerformance,
             ..Default::default()
         }))
-        .map_err(|_| GpuError::NoAdapter)?;
+        .map_err(|_| Error::NoGpuAdapter)?;
         let info = adapter.get_info();
         let name = format!("{} ({:?}, {:?})", info.name, info.backend, info.device_type);
         let has_f64 = adapter.features().contains(wgpu::Features::SHADER_F64);
         let precision = match precision {
-            Some(Precision::F64) if !has_f64 => return Err(GpuError::NoF64(name)),
+            Some(Precision::F64) if !has_f64 => return Err(Error::GpuNoF64 { device: name }),
             Some(p) => p,
             None if has_f64 => Precision::F64,
             None => Precision::F32,
@@ -77,7 +78,9 @@ impl Device {
             required_limits: adapter.limits(),
             ..Default::default()
         }))
-        .map_err(|e| GpuError::Device(e.to_string()))?;
+        .map_err(|e| Error::GpuDevice {
+            message: e.to_string(),
+        })?;
         let limits = device.limits();
         let max_binding = limits
             .max_storage_buffer_binding_size
@@ -184,7 +187,7 @@ impl Device {
         mode: u32,
         (n_queries, n_items, first, last): (u32, u32, u32, u32),
         inputs: [&wgpu::Buffer; 3],
-    ) -> Result<Dispatched, GpuError> {
+    ) -> Result<Dispatched, Error> {
         // Room for every answer of a small dispatch; grown on demand for large ones.
         let tests = if mode == 1 {
             n_items as u64
@@ -297,21 +300,29 @@ impl Device {
     }
 
     /// Maps `buffer` and returns its words.
-    pub(super) fn read(&self, buffer: &wgpu::Buffer) -> Result<Vec<u32>, GpuError> {
+    pub(super) fn read(&self, buffer: &wgpu::Buffer) -> Result<Vec<u32>, Error> {
         let (tx, rx) = mpsc::channel();
         buffer.map_async(wgpu::MapMode::Read, .., move |r| {
             let _ = tx.send(r);
         });
         self.device
             .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?;
         rx.recv()
-            .map_err(|e| GpuError::Readback(e.to_string()))?
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?
+            .map_err(|e| Error::GpuReadback {
+                message: e.to_string(),
+            })?;
         let words = {
             let view = buffer
                 .get_mapped_range(..)
-                .map_err(|e| GpuError::Readback(e.to_string()))?;
+                .map_err(|e| Error::GpuReadback {
+                    message: e.to_string(),
+                })?;
             view.chunks_exact(4)
                 .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
                 .collect()

@@ -5,7 +5,8 @@
 use std::borrow::Cow;
 
 use super::device::WORKGROUP;
-use super::{Device, GpuError, Precision};
+use super::{Device, Precision};
+use crate::error::Error;
 
 impl Device {
     /// Runs `entry` of a compute shader `source` that reads `input` at binding 0 and writes
@@ -19,7 +20,7 @@ impl Device {
         input: &[f64],
         output_len: usize,
         threads: u32,
-    ) -> Result<Vec<f64>, GpuError> {
+    ) -> Result<Vec<f64>, Error> {
         let module = self
             .device
             .create_shader_module(wgpu::ShaderModuleDescriptor {

@@ -41,7 +41,6 @@
 
 mod batches;
 mod device;
-mod error;
 #[cfg(feature = "testing")]
 mod evaluate;
 mod precision;
@@ -49,6 +48,5 @@ mod query;
 
 pub use batches::Batch;
 pub use device::Device;
-pub use error::GpuError;
 pub use precision::{shader_source, Precision};
 pub use query::Query;

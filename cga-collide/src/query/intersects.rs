@@ -3,9 +3,8 @@
 //! `a.intersects(&b)` ([`Intersects`]) is exact for the real numbers the `f64` inputs denote:
 //! every decision is the sign of a polynomial in the input coordinates and radii
 //! ([`crate::exact::predicates`]), certified in `f64` and recomputed with exact rationals when the
-//! certificate fails ([`ExactKernel`]). The same algorithms run with
-//! [`FloatKernel`](crate::exact::FloatKernel) through [`IntersectsWith`], to measure what the
-//! exact fall-back buys.
+//! certificate fails ([`ExactKernel`]). The algorithms are generic over the sign
+//! [`Kernel`] ([`IntersectsWith`]), so the tests can run them with plain `f64` signs too.
 //!
 //! The algorithms follow the thesis's IV.1–IV.6 in spirit, made exact:
 //! * triangle–triangle: each triangle's plane is computed once and the other's vertices are
@@ -23,7 +22,8 @@
 //!   connected set meets the surface iff `min distance <= r <= max distance`, the maximum
 //!   being at a vertex (IV.3, IV.5, IV.6).
 //! * sphere–sphere: the sign of the thesis's `B² = (S1·S2)² - S1² S2²`; ball–ball:
-//!   `S1·S2 + 4 r1 r2 >= 0`.
+//!   `S1·S2 + 4 r1 r2 >= 0`; ball–sphere: the balls meet and the ball is not strictly inside
+//!   the surface (`(r2 - r1)² > |c1 - c2|²` with `r1 < r2`).
 //!
 //! Degenerate triangles are the segment between their two extreme vertices (exact `f64`
 //! comparisons along an axis where they differ), zero-length segments are points, and
@@ -66,8 +66,7 @@ pub trait Intersects<Rhs: ?Sized> {
 }
 
 /// The intersection algorithms with a chosen way of deciding signs: [`ExactKernel`] (what
-/// [`Intersects`] uses) or [`FloatKernel`](crate::exact::FloatKernel) (plain `f64`, no
-/// certificate, no fall-back).
+/// [`Intersects`] uses), or plain `f64` signs in the tests (`testing::FloatKernel`).
 pub trait IntersectsWith<Rhs: ?Sized> {
     /// The test with signs decided by `K`.
     fn intersects_with<K: Kernel>(&self, rhs: &Rhs) -> bool;
@@ -478,6 +477,23 @@ impl IntersectsWith<Ball> for Ball {
     }
 }
 
+impl IntersectsWith<Sphere> for Ball {
+    fn intersects_with<K: Kernel>(&self, rhs: &Sphere) -> bool {
+        let x = spheres(self.centre(), self.radius(), rhs.centre(), rhs.radius());
+        // The surface meets the solid ball unless the balls are apart or the ball lies strictly
+        // inside the surface: `|c1 - c2| + r1 < r2`, i.e. `r1 < r2` and `(r2 - r1)² > |c1 - c2|²`.
+        let strictly_inside = self.radius() < rhs.radius()
+            && K::sign::<crate::exact::predicates::BallInBall, 8>(&x) == Greater;
+        K::sign::<BallBall, 8>(&x) != Less && !strictly_inside
+    }
+}
+
+impl IntersectsWith<Ball> for Sphere {
+    fn intersects_with<K: Kernel>(&self, rhs: &Ball) -> bool {
+        rhs.intersects_with::<K>(self)
+    }
+}
+
 /// Declares `query::intersects_<a>_<b>`, the exact test of one pair under its findable name.
 macro_rules! named_tests {
     ($($(#[$doc:meta])* $name:ident($a:ty, $b:ty);)*) => {$(
@@ -508,4 +524,7 @@ named_tests! {
     intersects_sphere_sphere(Sphere, Sphere);
     /// Exact: do two solid balls share a point?
     intersects_ball_ball(Ball, Ball);
+    /// Exact: does the solid ball meet the spherical surface? A ball strictly inside the
+    /// surface does not; touching it (from outside or from inside) counts.
+    intersects_ball_sphere(Ball, Sphere);
 }

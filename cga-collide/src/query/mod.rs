@@ -3,8 +3,7 @@
 //! # Naming rule
 //! * `query::intersects_<a>_<b>(&a, &b) -> bool`: the **exact** test of a pair of bounded
 //!   shapes (closed sets: touching counts), e.g. [`intersects_segment_triangle`]. The same tests
-//!   are methods through the [`Intersects`] trait (`a.intersects(&b)`, both argument orders),
-//!   and [`IntersectsWith`] runs them with another sign [`Kernel`](crate::exact::Kernel).
+//!   are methods through the [`Intersects`] trait (`a.intersects(&b)`, both argument orders).
 //! * `query::within_distance_<a>_<b>(&a, &b, c) -> bool`: exact clearance, also through
 //!   [`WithinDistance`].
 //! * `query::distance_<a>_<b>(&a, &b)`: the minimum distance with witnesses and a proved error
@@ -41,10 +40,10 @@ pub use distance::{
     exact_distance_triangle_triangle, CertifiedDistance, ExactDistance,
 };
 pub use intersects::{
-    intersects_ball_ball, intersects_segment_ball, intersects_segment_segment,
-    intersects_segment_sphere, intersects_segment_triangle, intersects_sphere_sphere,
-    intersects_triangle_ball, intersects_triangle_sphere, intersects_triangle_triangle, Intersects,
-    IntersectsWith,
+    intersects_ball_ball, intersects_ball_sphere, intersects_segment_ball,
+    intersects_segment_segment, intersects_segment_sphere, intersects_segment_triangle,
+    intersects_sphere_sphere, intersects_triangle_ball, intersects_triangle_sphere,
+    intersects_triangle_triangle, Intersects,
 };
 pub use segment_entry::segment_triangle_entry;
 pub use within_distance::{

@@ -106,7 +106,9 @@ impl Triangle {
 
 /// The spherical *surface* with a centre and a radius (a point for radius 0).
 ///
-/// A triangle strictly inside a sphere does not meet it; use [`Ball`] for the solid.
+/// A triangle strictly inside a sphere does not meet it; use [`Ball`] for the solid. The
+/// conformal sphere of the same surface (meets, versors) is
+/// [`conformal::Sphere`](crate::conformal::Sphere), converted with `From` and `TryFrom`.
 ///
 /// ```
 /// use cga_collide::{nalgebra::Point3, Sphere, Error};

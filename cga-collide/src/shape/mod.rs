@@ -7,8 +7,8 @@
 //! | [`polyhedron::ConvexPolyhedron`] | a validated convex polyhedron (vertices and faces) |
 //! | [`mesh::TriMesh`] | an indexed triangle mesh, with OBJ/OFF/PLY/STL loaders and built-in fixtures (feature `builtin-meshes`) |
 //!
-//! Constructors are fallible: non-finite input is a typed error ([`crate::Error`],
-//! [`polyhedron::PolyhedronError`]), never a panic. The conformal
+//! Constructors are fallible: non-finite input is a typed error ([`crate::Error`]), never a
+//! panic. The conformal
 //! (5D) representations of these objects are in [`crate::conformal`].
 
 pub(crate) mod bounded;

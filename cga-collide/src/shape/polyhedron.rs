@@ -6,7 +6,7 @@
 //! two-manifold with consistently oriented faces, Euler's `V - E + F = 2`, every face planar and
 //! convex, every vertex on the inner side of every face plane, outward orientation), each within
 //! a tolerance relative to the polyhedron's size, and says precisely what is wrong
-//! ([`PolyhedronError`]).
+//! (an [`Error`] whose variant names start with `Polyhedron`).
 //!
 //! The built-in solids ([`cube`](ConvexPolyhedron::cube),
 //! [`octahedron`](ConvexPolyhedron::octahedron),
@@ -29,117 +29,9 @@
 use std::collections::HashMap;
 
 use nalgebra::{Point3, Vector3};
-use thiserror::Error;
 
+use crate::error::Error;
 use crate::shape::mesh::TriMesh;
-
-/// Why a set of vertices and faces is not a valid convex polyhedron.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum PolyhedronError {
-    /// Fewer than 4 vertices or 4 faces.
-    #[error("a polyhedron needs at least 4 vertices and 4 faces (got {vertices} vertices, {faces} faces)")]
-    TooSmall {
-        /// Number of vertices given.
-        vertices: usize,
-        /// Number of faces given.
-        faces: usize,
-    },
-    /// A vertex coordinate is NaN or infinite.
-    #[error(
-        "vertex {vertex} has a non-finite coordinate ({value}); coordinates must be finite numbers"
-    )]
-    NonFinite {
-        /// Index of the vertex.
-        vertex: usize,
-        /// The offending value.
-        value: f64,
-    },
-    /// A face has fewer than 3 vertices or repeats a vertex.
-    #[error("face {face} is not a polygon: {reason}")]
-    BadFace {
-        /// Index of the face.
-        face: usize,
-        /// What is wrong, e.g. `"fewer than 3 vertices"`.
-        reason: &'static str,
-    },
-    /// A face refers to a vertex that does not exist.
-    #[error("face {face} refers to vertex {index}, but there are only {vertex_count} vertices (indices are 0-based)")]
-    IndexOutOfRange {
-        /// Index of the face.
-        face: usize,
-        /// The bad vertex index.
-        index: usize,
-        /// Number of vertices.
-        vertex_count: usize,
-    },
-    /// A vertex is used by no face.
-    #[error("vertex {vertex} belongs to no face; remove it or add the faces that use it")]
-    UnusedVertex {
-        /// Index of the vertex.
-        vertex: usize,
-    },
-    /// An edge is not shared by exactly two faces traversing it in opposite directions (the
-    /// surface is open, non-manifold, or inconsistently oriented).
-    #[error("edge {from}->{to} of face {face} {reason}")]
-    BadEdge {
-        /// First vertex of the directed edge.
-        from: usize,
-        /// Second vertex of the directed edge.
-        to: usize,
-        /// A face using the edge.
-        face: usize,
-        /// What is wrong.
-        reason: &'static str,
-    },
-    /// `V - E + F != 2`.
-    #[error("Euler characteristic V - E + F = {vertices} - {edges} + {faces} is not 2: a convex polyhedron is a closed surface without holes or handles")]
-    Euler {
-        /// Vertices.
-        vertices: usize,
-        /// Edges.
-        edges: usize,
-        /// Faces.
-        faces: usize,
-    },
-    /// A face's vertices are not in one plane.
-    #[error("face {face} is not planar: vertex {vertex} is {distance:e} from the face plane (tolerance {tolerance:e})")]
-    NonPlanar {
-        /// Index of the face.
-        face: usize,
-        /// The vertex farthest from the plane.
-        vertex: usize,
-        /// Its distance.
-        distance: f64,
-        /// The tolerance.
-        tolerance: f64,
-    },
-    /// A face polygon is not convex (or is degenerate, or is clockwise seen from outside).
-    #[error("face {face} is not a convex polygon at its corner {corner} (vertex {vertex})")]
-    NonConvexFace {
-        /// Index of the face.
-        face: usize,
-        /// Position of the corner in the face's vertex list.
-        corner: usize,
-        /// The vertex at that corner.
-        vertex: usize,
-    },
-    /// A vertex lies on the outer side of a face plane: the solid is not convex, or the face is
-    /// oriented inwards.
-    #[error("vertex {vertex} is {distance:e} outside the plane of face {face} (tolerance {tolerance:e}): not convex, or the face is oriented inwards")]
-    NotConvex {
-        /// Index of the face.
-        face: usize,
-        /// The vertex outside.
-        vertex: usize,
-        /// Its distance from the plane (positive = outside).
-        distance: f64,
-        /// The tolerance.
-        tolerance: f64,
-    },
-    /// [`ConvexPolyhedron::by_name`] does not know the name.
-    #[error("unknown polyhedron {0:?} (known: cube, octahedron, truncated_octahedron (troctahedron), rh (truncated_icosidodecahedron), diamond)")]
-    UnknownName(String),
-}
 
 /// A convex polyhedron: `f64` vertices and polygonal faces (vertex indices, counter-clockwise
 /// seen from outside), validated on construction, with its fan triangulation.
@@ -171,39 +63,36 @@ pub(crate) fn newell_normal(vertices: &[Point3<f64>], face: &[usize]) -> Vector3
 impl ConvexPolyhedron {
     /// Validates and builds a convex polyhedron (see the module docs for the checks; the
     /// tolerance is [`TOLERANCE`] times the largest vertex norm).
-    pub fn new(
-        vertices: Vec<Point3<f64>>,
-        faces: Vec<Vec<usize>>,
-    ) -> Result<Self, PolyhedronError> {
+    pub fn new(vertices: Vec<Point3<f64>>, faces: Vec<Vec<usize>>) -> Result<Self, Error> {
         if vertices.len() < 4 || faces.len() < 4 {
-            return Err(PolyhedronError::TooSmall {
+            return Err(Error::PolyhedronTooSmall {
                 vertices: vertices.len(),
                 faces: faces.len(),
             });
         }
         for (i, v) in vertices.iter().enumerate() {
             if let Some(&value) = v.coords.iter().find(|c| !c.is_finite()) {
-                return Err(PolyhedronError::NonFinite { vertex: i, value });
+                return Err(Error::PolyhedronNonFiniteVertex { vertex: i, value });
             }
         }
         let mut used = vec![false; vertices.len()];
         for (f, face) in faces.iter().enumerate() {
             if face.len() < 3 {
-                return Err(PolyhedronError::BadFace {
+                return Err(Error::PolyhedronBadFace {
                     face: f,
                     reason: "fewer than 3 vertices",
                 });
             }
             for (k, &i) in face.iter().enumerate() {
                 if i >= vertices.len() {
-                    return Err(PolyhedronError::IndexOutOfRange {
+                    return Err(Error::PolyhedronIndexOutOfRange {
                         face: f,
                         index: i,
                         vertex_count: vertices.len(),
                     });
                 }
                 if face[..k].contains(&i) {
-                    return Err(PolyhedronError::BadFace {
+                    return Err(Error::PolyhedronBadFace {
                         face: f,
                         reason: "a vertex is repeated",
                     });
@@ -212,7 +101,7 @@ impl ConvexPolyhedron {
             }
         }
         if let Some(vertex) = used.iter().position(|u| !u) {
-            return Err(PolyhedronError::UnusedVertex { vertex });
+            return Err(Error::PolyhedronUnusedVertex { vertex });
         }
         // Every directed edge once, and its reverse once.
         let mut directed: HashMap<(usize, usize), usize> = HashMap::new();
@@ -220,7 +109,7 @@ impl ConvexPolyhedron {
             for k in 0..face.len() {
                 let e = (face[k], face[(k + 1) % face.len()]);
                 if directed.insert(e, f).is_some() {
-                    return Err(PolyhedronError::BadEdge {
+                    return Err(Error::PolyhedronBadEdge {
                         from: e.0,
                         to: e.1,
                         face: f,
@@ -231,7 +120,7 @@ impl ConvexPolyhedron {
         }
         for (&(a, b), &f) in &directed {
             if !directed.contains_key(&(b, a)) {
-                return Err(PolyhedronError::BadEdge {
+                return Err(Error::PolyhedronBadEdge {
                     from: a,
                     to: b,
                     face: f,
@@ -241,7 +130,7 @@ impl ConvexPolyhedron {
         }
         let edges = directed.len() / 2;
         if vertices.len() + faces.len() != edges + 2 {
-            return Err(PolyhedronError::Euler {
+            return Err(Error::PolyhedronEuler {
                 vertices: vertices.len(),
                 edges,
                 faces: faces.len(),
@@ -253,7 +142,7 @@ impl ConvexPolyhedron {
             let n = newell_normal(&vertices, face);
             let norm = n.norm();
             if norm == 0.0 {
-                return Err(PolyhedronError::BadFace {
+                return Err(Error::PolyhedronBadFace {
                     face: f,
                     reason: "zero area",
                 });
@@ -268,7 +157,7 @@ impl ConvexPolyhedron {
             for &i in face {
                 let distance = (vertices[i].coords - c).dot(&n).abs();
                 if distance > tolerance {
-                    return Err(PolyhedronError::NonPlanar {
+                    return Err(Error::PolyhedronNonPlanarFace {
                         face: f,
                         vertex: i,
                         distance,
@@ -283,7 +172,7 @@ impl ConvexPolyhedron {
                 let d = vertices[face[(k + 1) % face.len()]];
                 let turn = (b - a).cross(&(d - b)).dot(&n);
                 if turn <= tolerance * (b - a).norm().max(tolerance) {
-                    return Err(PolyhedronError::NonConvexFace {
+                    return Err(Error::PolyhedronNonConvexFace {
                         face: f,
                         corner: k,
                         vertex: face[k],
@@ -294,7 +183,7 @@ impl ConvexPolyhedron {
             for (i, v) in vertices.iter().enumerate() {
                 let distance = (v.coords - c).dot(&n);
                 if distance > tolerance {
-                    return Err(PolyhedronError::NotConvex {
+                    return Err(Error::PolyhedronNotConvex {
                         face: f,
                         vertex: i,
                         distance,
@@ -525,7 +414,7 @@ impl ConvexPolyhedron {
     /// The solid of a name, case-insensitive: `cube`; `octahedron`; `truncated_octahedron`,
     /// `troctahedron`, `troct`; `rh`, `truncated_icosidodecahedron`,
     /// `great_rhombicosidodecahedron`; `diamond` (`-` and `_` are interchangeable).
-    pub fn by_name(name: &str) -> Result<Self, PolyhedronError> {
+    pub fn by_name(name: &str) -> Result<Self, Error> {
         match name.to_ascii_lowercase().replace('-', "_").as_str() {
             "cube" => Ok(Self::cube()),
             "octahedron" => Ok(Self::octahedron()),
@@ -534,7 +423,9 @@ impl ConvexPolyhedron {
                 Ok(Self::truncated_icosidodecahedron())
             }
             "diamond" => Ok(Self::diamond()),
-            _ => Err(PolyhedronError::UnknownName(name.to_owned())),
+            _ => Err(Error::UnknownPolyhedron {
+                name: name.to_owned(),
+            }),
         }
     }
 

@@ -11,7 +11,8 @@
 use nalgebra::Point3;
 
 use crate::exact::Kernel;
-use crate::query::{Intersects, IntersectsWith};
+use crate::query::intersects::IntersectsWith;
+use crate::query::Intersects;
 use crate::shape::{Ball, Segment, Sphere, Triangle};
 
 /// A small deterministic pseudo-random generator (SplitMix64).

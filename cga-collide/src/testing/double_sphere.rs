@@ -22,7 +22,7 @@ use crate::hierarchy::double_sphere::DoubleSphereTree;
 /// let [a, b] = t.nodes()[0].children.unwrap();
 /// let sum = part(&t, a as usize).volume() + part(&t, b as usize).volume();
 /// assert!((sum - part(&t, 0).volume()).abs() < 1e-12);
-/// # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn part(tree: &DoubleSphereTree, i: usize) -> &SubPolyhedron {
     tree.part(i)

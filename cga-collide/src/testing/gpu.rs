@@ -1,6 +1,7 @@
 //! A hook for checking device code against the CPU (feature `gpu`).
 
-use crate::gpu::{Device, GpuError};
+use crate::error::Error;
+use crate::gpu::Device;
 
 /// Runs `entry` of a compute shader `source` on `device`: the shader reads `input` at binding 0
 /// (an `array<f64>` or `array<f32>` in the device's [`precision`](Device::precision)) and
@@ -26,7 +27,7 @@ use crate::gpu::{Device, GpuError};
 /// );
 /// let out = evaluate(&device, &source, "main", &[1.0, 2.0, 3.0, 4.0], 4, 4)?;
 /// assert_eq!(out, [2.0, 4.0, 6.0, 8.0]);
-/// # Ok::<(), cga_collide::gpu::GpuError>(())
+/// # Ok::<(), cga_collide::Error>(())
 /// ```
 pub fn evaluate(
     device: &Device,
@@ -35,6 +36,6 @@ pub fn evaluate(
     input: &[f64],
     output_len: usize,
     threads: u32,
-) -> Result<Vec<f64>, GpuError> {
+) -> Result<Vec<f64>, Error> {
     device.evaluate(source, entry, input, output_len, threads)
 }

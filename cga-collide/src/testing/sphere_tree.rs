@@ -18,7 +18,7 @@
 //! assert!(paper_method(&a, &b).collides);
 //! assert!(simultaneous(&a, &b).collides);
 //! assert!(brute_force(&a, &b).collides);
-//! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 pub use crate::hierarchy::sphere_tree::collide::{

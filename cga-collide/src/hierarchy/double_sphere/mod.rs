@@ -106,8 +106,8 @@ pub(crate) mod inscribed;
 mod traverse;
 
 use nalgebra::{Point3, SymmetricEigen, Vector3};
-use thiserror::Error;
 
+use crate::error::Error;
 use crate::shape::polyhedron::ConvexPolyhedron;
 use clip::{polygon_meets_halfspaces, SubPolyhedron};
 pub use traverse::{Decision, Outcome};
@@ -119,19 +119,6 @@ pub enum InnerSphereKind {
     Centroid,
     /// The largest inscribed sphere (Chebyshev centre); never smaller than the centroid one.
     Chebyshev,
-}
-
-/// Why a tree could not be built.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum DoubleSphereError {
-    /// The level is larger than [`MAX_LEVEL`].
-    #[error("level {level} is too deep: choose a level from 0 to {max}")]
-    LevelTooDeep {
-        /// The requested level.
-        level: usize,
-        /// The largest supported level.
-        max: usize,
-    },
 }
 
 /// The deepest supported tree (`2^16` leaves).
@@ -299,9 +286,9 @@ impl DoubleSphereTree {
         polyhedron: &ConvexPolyhedron,
         level: usize,
         inner: InnerSphereKind,
-    ) -> Result<Self, DoubleSphereError> {
+    ) -> Result<Self, Error> {
         if level > MAX_LEVEL {
-            return Err(DoubleSphereError::LevelTooDeep {
+            return Err(Error::LevelTooDeep {
                 level,
                 max: MAX_LEVEL,
             });

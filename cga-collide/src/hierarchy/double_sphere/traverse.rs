@@ -220,7 +220,7 @@ impl DoubleSphereTree {
     /// let here = Isometry3::identity();
     /// assert!(cube.collides_at(&here, &cube, &Isometry3::translation(0.5, 0.0, 0.0)).collides);
     /// assert!(!cube.collides_at(&here, &cube, &Isometry3::translation(5.0, 0.0, 0.0)).collides);
-    /// # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
     ///
     /// The test is the paper's Algorithm 1 (outer spheres reject, labels and inner spheres accept, leaves go to
@@ -294,7 +294,7 @@ impl DoubleSphereTree {
     /// let out = a.collides(&b); // both centred at the origin
     /// assert!(out.collides);
     /// assert_eq!(out.decided_by, Decision::InnerSpheres);
-    /// # Ok::<(), cga_collide::hierarchy::double_sphere::DoubleSphereError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn collides(&self, other: &DoubleSphereTree) -> Outcome {
         let id = Isometry3::identity();

@@ -276,7 +276,7 @@ impl SphereTree {
     /// assert!(a.collides(&b).collides);
     /// assert_eq!(a.collides(&b).witness, Some((0, 0)));
     /// assert!(!a.collides(&c).collides);
-    /// # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn collides(&self, other: &SphereTree) -> CollisionResult {
         simultaneous(self, other)
@@ -293,7 +293,7 @@ impl SphereTree {
     /// let here = Isometry3::identity();
     /// assert!(a.collides_at(&here, &a, &Isometry3::translation(1.5, 0.0, 0.0)).collides);
     /// assert!(!a.collides_at(&here, &a, &Isometry3::translation(2.5, 0.0, 0.0)).collides);
-    /// # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+    /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn collides_at(
         &self,

@@ -11,7 +11,7 @@
 //!
 //! The reader accepts `//` comments to the end of a line (the paper marks roots with `//raíz`)
 //! and blank lines anywhere (the paper's text has them at page breaks); tokens are separated
-//! by any whitespace. It never panics: every problem is a [`FormatError`] naming the line
+//! by any whitespace. It never panics: every problem is an [`Error`] (variants `SphereTree…`) naming the line
 //! (1-based) and what was expected there. Deeply nested input is parsed without recursion.
 //!
 //! [`read_lenient`] additionally accepts input that ends early (a truncated file, or a document
@@ -29,91 +29,14 @@
 //! assert_eq!(read(&write(&trees))?, trees);
 //! let err = read("1\n0 0 0 2 1\n2 8\n1 0 0 1 0\n").unwrap_err();
 //! assert!(err.to_string().contains("line 4"));
-//! # Ok::<(), cga_collide::hierarchy::sphere_tree::format::FormatError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use std::fmt::Write as _;
 
-use thiserror::Error;
-
-use super::{CellState, NestedNode, SphereTree, TreeError};
-
-/// A node whose children had not all been read when the input ended.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Gap {
-    /// Which tree (0-based).
-    pub tree: usize,
-    /// The line of the node (its `cx cy cz r state` line).
-    pub line: usize,
-    /// The number of children its `k 8` line declares.
-    pub declared: usize,
-    /// How many complete children were read.
-    pub read: usize,
-}
-
-impl std::fmt::Display for Gap {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "tree {} node at line {} declares {} children, {} complete",
-            self.tree + 1,
-            self.line,
-            self.declared,
-            self.read
-        )
-    }
-}
-
-/// Why a sphere-tree file could not be read. Every variant names a line (1-based).
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum FormatError {
-    /// A line is not what the format requires at that point.
-    #[error("line {line}: expected {expected}, found `{found}`")]
-    Syntax {
-        /// The line.
-        line: usize,
-        /// What the format requires there.
-        expected: String,
-        /// The line's content (comment removed, trimmed).
-        found: String,
-    },
-    /// The input ended while a tree was incomplete.
-    #[error(
-        "input ends after line {line}: expected {expected}; {} of {declared_trees} trees complete{}",
-        complete_trees,
-        gaps.iter().map(|g| format!("; {g}")).collect::<String>()
-    )]
-    UnexpectedEnd {
-        /// The last line of the input.
-        line: usize,
-        /// What the format required next.
-        expected: String,
-        /// The number of trees the first line declares.
-        declared_trees: usize,
-        /// How many trees were complete.
-        complete_trees: usize,
-        /// The open nodes of the incomplete tree, outermost first.
-        gaps: Vec<Gap>,
-    },
-    /// Non-blank content after the last declared tree.
-    #[error("line {line}: the {declared_trees} declared trees are complete, but the input goes on with `{found}`")]
-    TrailingContent {
-        /// The line.
-        line: usize,
-        /// The number of trees the first line declares.
-        declared_trees: usize,
-        /// The line's content.
-        found: String,
-    },
-    /// A tree was read but is too large to store.
-    #[error("tree starting at line {line}: {source}")]
-    Tree {
-        /// The line of the tree's root.
-        line: usize,
-        /// What is wrong.
-        source: TreeError,
-    },
-}
+use super::{CellState, NestedNode, SphereTree};
+use crate::error::Error;
+pub use crate::error::Gap;
 
 /// Trees read by [`read_lenient`] from input that may end early.
 #[derive(Debug, Clone, PartialEq)]
@@ -138,13 +61,13 @@ impl LenientRead {
 }
 
 /// Reads every tree of a file in the paper's format; any deviation is an error.
-pub fn read(text: &str) -> Result<Vec<SphereTree>, FormatError> {
+pub fn read(text: &str) -> Result<Vec<SphereTree>, Error> {
     Parser::new(text).run(false).map(|r| r.trees)
 }
 
 /// Reads like [`read`], but input that ends early is not an error: the complete trees, the
 /// partial tree and the [`Gap`]s are returned. Any other problem is still an error.
-pub fn read_lenient(text: &str) -> Result<LenientRead, FormatError> {
+pub fn read_lenient(text: &str) -> Result<LenientRead, Error> {
     Parser::new(text).run(true)
 }
 
@@ -212,10 +135,10 @@ impl<'a> Parser<'a> {
         None
     }
 
-    fn run(mut self, lenient: bool) -> Result<LenientRead, FormatError> {
+    fn run(mut self, lenient: bool) -> Result<LenientRead, Error> {
         let count_expected = "the number of trees (a non-negative integer)";
         let Some((line, c)) = self.next_line() else {
-            return Err(FormatError::UnexpectedEnd {
+            return Err(Error::SphereTreeUnexpectedEnd {
                 line: self.last_line,
                 expected: count_expected.into(),
                 declared_trees: 0,
@@ -226,7 +149,7 @@ impl<'a> Parser<'a> {
         let declared: usize = match c.parse() {
             Ok(n) => n,
             Err(_) => {
-                return Err(FormatError::Syntax {
+                return Err(Error::SphereTreeSyntax {
                     line,
                     expected: count_expected.into(),
                     found: clip(c),
@@ -238,15 +161,15 @@ impl<'a> Parser<'a> {
             match self.tree(t)? {
                 Ok((root_line, root)) => {
                     trees.push(SphereTree::from_nested(&root).map_err(|source| {
-                        FormatError::Tree {
+                        Error::SphereTreeAtLine {
                             line: root_line,
-                            source,
+                            source: Box::new(source),
                         }
                     })?)
                 }
                 Err((expected, partial, gaps)) => {
                     if !lenient {
-                        return Err(FormatError::UnexpectedEnd {
+                        return Err(Error::SphereTreeUnexpectedEnd {
                             line: self.last_line,
                             expected,
                             declared_trees: declared,
@@ -257,9 +180,9 @@ impl<'a> Parser<'a> {
                     let complete_trees = trees.len();
                     if let Some((root_line, root)) = partial {
                         trees.push(SphereTree::from_nested(&root).map_err(|source| {
-                            FormatError::Tree {
+                            Error::SphereTreeAtLine {
                                 line: root_line,
-                                source,
+                                source: Box::new(source),
                             }
                         })?);
                     }
@@ -273,7 +196,7 @@ impl<'a> Parser<'a> {
             }
         }
         if let Some((line, c)) = self.next_line() {
-            return Err(FormatError::TrailingContent {
+            return Err(Error::SphereTreeTrailingContent {
                 line,
                 declared_trees: declared,
                 found: clip(c),
@@ -293,10 +216,8 @@ impl<'a> Parser<'a> {
     fn tree(
         &mut self,
         t: usize,
-    ) -> Result<
-        Result<(usize, NestedNode), (String, Option<(usize, NestedNode)>, Vec<Gap>)>,
-        FormatError,
-    > {
+    ) -> Result<Result<(usize, NestedNode), (String, Option<(usize, NestedNode)>, Vec<Gap>)>, Error>
+    {
         let mut stack: Vec<Open> = Vec::new();
         loop {
             let node_expected = if stack.is_empty() {
@@ -380,8 +301,8 @@ fn ended(
     (expected, partial, gaps)
 }
 
-fn node_line(line: usize, c: &str) -> Result<([f64; 3], f64, CellState), FormatError> {
-    let syntax = |expected: String| FormatError::Syntax {
+fn node_line(line: usize, c: &str) -> Result<([f64; 3], f64, CellState), Error> {
+    let syntax = |expected: String| Error::SphereTreeSyntax {
         line,
         expected,
         found: clip(c),
@@ -426,8 +347,8 @@ fn node_line(line: usize, c: &str) -> Result<([f64; 3], f64, CellState), FormatE
     Ok(([v[0], v[1], v[2]], v[3], state))
 }
 
-fn children_line(line: usize, c: &str, node_line: usize) -> Result<usize, FormatError> {
-    let syntax = |expected: String| FormatError::Syntax {
+fn children_line(line: usize, c: &str, node_line: usize) -> Result<usize, Error> {
+    let syntax = |expected: String| Error::SphereTreeSyntax {
         line,
         expected,
         found: clip(c),

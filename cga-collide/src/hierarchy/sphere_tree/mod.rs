@@ -23,7 +23,7 @@
 //! assert_eq!(tree.len(), 3);
 //! assert_eq!(tree.children(0).len(), 2);
 //! assert!(tree.nesting_violations().is_empty());
-//! # Ok::<(), cga_collide::hierarchy::sphere_tree::TreeError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 pub(crate) mod collide;
@@ -36,10 +36,9 @@ pub use collide::CollisionResult;
 use std::collections::VecDeque;
 use std::ops::Range;
 
-use nalgebra::{Isometry3, Point3};
-use thiserror::Error;
-
+use crate::error::Error;
 use crate::exact::ball_inside;
+use nalgebra::{Isometry3, Point3};
 
 /// The state of an octree cell, as the paper's format writes it (`1` partial, `0` full).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -132,45 +131,6 @@ impl Drop for NestedNode {
     }
 }
 
-/// Why a sphere tree could not be built from the given nodes.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum TreeError {
-    /// A centre coordinate or a radius is NaN or infinite.
-    #[error("node {node} (breadth-first index): {what} is not finite ({value})")]
-    NonFinite {
-        /// Breadth-first index of the node.
-        node: usize,
-        /// `"centre x"`, `"centre y"`, `"centre z"` or `"radius"`.
-        what: &'static str,
-        /// The rejected value.
-        value: f64,
-    },
-    /// A radius is negative.
-    #[error("node {node} (breadth-first index): radius is negative ({radius})")]
-    NegativeRadius {
-        /// Breadth-first index of the node.
-        node: usize,
-        /// The rejected radius.
-        radius: f64,
-    },
-    /// A node has more than 8 children.
-    #[error(
-        "node {node} (breadth-first index) has {count} children; an octree node has at most 8"
-    )]
-    TooManyChildren {
-        /// Breadth-first index of the node.
-        node: usize,
-        /// Its number of children.
-        count: usize,
-    },
-    /// More nodes than 32-bit indices address.
-    #[error("{count} nodes is more than a sphere tree holds (2^32 - 1): build a shallower tree")]
-    TooLarge {
-        /// The number of nodes.
-        count: usize,
-    },
-}
-
 /// A child ball that is not inside its parent ball (see [`SphereTree::nesting_violations`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NestingViolation {
@@ -199,17 +159,13 @@ pub struct SphereTree {
 
 impl SphereTree {
     /// A tree of a single ball.
-    pub fn single(
-        centre: [f64; 3],
-        radius: f64,
-        state: CellState,
-    ) -> Result<SphereTree, TreeError> {
+    pub fn single(centre: [f64; 3], radius: f64, state: CellState) -> Result<SphereTree, Error> {
         Self::from_nested(&NestedNode::leaf(centre, radius, state))
     }
 
     /// The tree of a recursive node, laid out breadth-first. Checks that every value is finite,
     /// every radius non-negative and no node has more than 8 children.
-    pub fn from_nested(root: &NestedNode) -> Result<SphereTree, TreeError> {
+    pub fn from_nested(root: &NestedNode) -> Result<SphereTree, Error> {
         let mut nodes: Vec<SphereTreeNode> = Vec::new();
         let mut queue: VecDeque<&NestedNode> = VecDeque::new();
         queue.push_back(root);
@@ -224,7 +180,7 @@ impl SphereTree {
                 ("radius", n.radius),
             ] {
                 if !value.is_finite() {
-                    return Err(TreeError::NonFinite {
+                    return Err(Error::SphereTreeNonFinite {
                         node: index,
                         what,
                         value,
@@ -232,19 +188,19 @@ impl SphereTree {
                 }
             }
             if n.radius < 0.0 {
-                return Err(TreeError::NegativeRadius {
+                return Err(Error::SphereTreeNegativeRadius {
                     node: index,
                     radius: n.radius,
                 });
             }
             if n.children.len() > 8 {
-                return Err(TreeError::TooManyChildren {
+                return Err(Error::SphereTreeTooManyChildren {
                     node: index,
                     count: n.children.len(),
                 });
             }
             if next + n.children.len() > u32::MAX as usize {
-                return Err(TreeError::TooLarge {
+                return Err(Error::SphereTreeTooLarge {
                     count: next + n.children.len(),
                 });
             }

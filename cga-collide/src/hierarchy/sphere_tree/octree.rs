@@ -39,15 +39,15 @@
 //! assert_eq!(tree.height(), 3);
 //! assert!(tree.nesting_violations().is_empty());
 //! assert_eq!(report.levels.len(), 4);
-//! # Ok::<(), cga_collide::hierarchy::sphere_tree::octree::BuildError>(())
+//! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 use std::ops::ControlFlow;
 
+use crate::error::Error;
 use crate::parallel::*;
 use nalgebra::Point3;
 use num_traits::Zero;
-use thiserror::Error;
 
 use super::tribox::triangle_meets_box;
 use super::{CellState, SphereTree};
@@ -79,33 +79,6 @@ impl BuildOptions {
             require_closed: true,
         }
     }
-}
-
-/// Why a tree could not be built.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum BuildError {
-    /// The depth is above [`MAX_DEPTH`].
-    #[error(
-        "depth {depth} is above the maximum {MAX_DEPTH}: choose a depth from 0 to {MAX_DEPTH}"
-    )]
-    DepthTooLarge {
-        /// The requested depth.
-        depth: u32,
-    },
-    /// The mesh is not closed, so "inside" is not defined.
-    #[error("the mesh is not closed (some edge is used by an odd number of triangles); full and empty cells cannot be told apart: close its holes, or use a closed (watertight) mesh")]
-    NotClosed,
-    /// The exact grid cannot be represented in `f64` (the mesh is tiny compared to its
-    /// distance from the origin, or its coordinates are extreme).
-    #[error("the octree grid of depth {depth} cannot be represented exactly in f64 for a mesh of size {extent} at distance {offset} from the origin: move the mesh near the origin (e.g. scale it into the unit box) or choose a smaller depth")]
-    Precision {
-        /// The requested depth.
-        depth: u32,
-        /// The largest side of the mesh's bounding box.
-        extent: f64,
-        /// The largest absolute coordinate of the box.
-        offset: f64,
-    },
 }
 
 /// Cell counts of one level.
@@ -145,10 +118,10 @@ struct Grid {
 }
 
 impl Grid {
-    fn new(lo: &Point3<f64>, hi: &Point3<f64>, depth: u32) -> Result<Grid, BuildError> {
+    fn new(lo: &Point3<f64>, hi: &Point3<f64>, depth: u32) -> Result<Grid, Error> {
         let extent = (hi - lo).max();
         let offset = lo.coords.abs().max().max(hi.coords.abs().max());
-        let err = BuildError::Precision {
+        let err = Error::OctreePrecision {
             depth,
             extent,
             offset,
@@ -271,14 +244,17 @@ fn classify(
 pub fn build(
     collider: &Collider,
     options: &BuildOptions,
-) -> Result<(SphereTree, BuildReport), BuildError> {
+) -> Result<(SphereTree, BuildReport), Error> {
     let depth = options.depth;
     if depth > MAX_DEPTH {
-        return Err(BuildError::DepthTooLarge { depth });
+        return Err(Error::OctreeDepthTooLarge {
+            depth,
+            max: MAX_DEPTH,
+        });
     }
     let mesh = collider.mesh();
     if options.require_closed && !mesh.is_closed() {
-        return Err(BuildError::NotClosed);
+        return Err(Error::OctreeMeshNotClosed);
     }
     let (lo, hi) = mesh.bounds();
     let grid = Grid::new(&lo, &hi, depth)?;

@@ -2,7 +2,8 @@
 //!
 //! This is the independent reference of the double-sphere experiment
 //! (the `cga experiment` command of the `cga-cli` package): every answer of the sphere hierarchy is checked against it. It
-//! shares nothing with the hierarchy but the exact predicates.
+//! shares nothing with the hierarchy but the exact predicates. It is test support (feature
+//! `testing`): the library's own answer for meshes is [`Collider::collides_solid`].
 //!
 //! The ground truth is the closed solid bounded by the given triangles (touching counts as
 //! intersecting), with the vertices exactly as given: after a rigid motion in `f64` the faces
@@ -27,7 +28,7 @@
 //! rare on random placements, and the experiment reports how often it ran.
 //!
 //! ```
-//! use cga_collide::collider::convex::ConvexMeshRef;
+//! use cga_collide::testing::convex::ConvexMeshRef;
 //! use nalgebra::Point3;
 //!
 //! // A unit cube and the same cube moved by (0.5, 0.5, 0.5): they overlap.
