@@ -11,6 +11,7 @@ mod device;
 mod distance;
 mod experiment_cmd;
 mod mesh;
+mod number;
 mod output;
 mod placement;
 mod poses;

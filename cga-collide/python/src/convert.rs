@@ -29,10 +29,11 @@ pub fn value_error(message: String) -> PyErr {
     CgaError::new_err(message)
 }
 
-/// How far the rotation part of a pose may be from a rotation: `max |RᵀR − I|`. The library's
+/// How far the rotation part of a pose may be from a rotation: `max |RᵀR − I|`, the library's
+/// rule for poses given as matrices (`cga scene`'s 12-number lines use it too). The library's
 /// own check on quaternions accepts `|q|²` in `[1/2, 2]` and normalises; a matrix this far from
 /// orthonormal is a mistake (a scale, a shear), not rounding.
-pub const ROTATION_TOLERANCE: f64 = 1e-6;
+pub const ROTATION_TOLERANCE: f64 = cga_collide::collider::ROTATION_TOLERANCE;
 
 /// The array behind `obj`, checked to be a numpy array of float64 (any memory layout).
 pub fn f64_array<'py>(
