@@ -203,9 +203,10 @@ pub fn run(args: CollideArgs) -> Result<()> {
     // The contact class (exact for closed meshes).
     let contact =
         (ca.mesh().is_closed() && cb.mesh().is_closed()).then(|| ca.contact_class(&cb).name());
-    // The exact intersection of every intersecting triangle pair, when a file or the image
-    // needs it.
-    let contacts = if collides && (args.contacts.is_some() || args.image.is_some()) {
+    // The exact intersection of every intersecting triangle pair, when the file needs it (the
+    // image draws a curve rounded to f64 unless these are at hand: their rational arithmetic
+    // costs a hundred times the query on coincident meshes).
+    let contacts = if collides && args.contacts.is_some() {
         bar.set_message("intersecting");
         ca.contacts(&cb)
     } else {
@@ -228,14 +229,18 @@ pub fn run(args: CollideArgs) -> Result<()> {
     }
     if let Some(path) = &args.image {
         bar.set_message("rendering");
-        render::render(
-            ca.mesh(),
-            cb.mesh(),
-            &found.pairs,
-            &render::curve_segments(contacts.iter().map(|(_, g)| g)),
-            path,
-        )
-        .with_context(|| format!("--image {}: cannot write the image", path.display()))?;
+        let curve = if !collides {
+            Vec::new()
+        } else if args.contacts.is_some() {
+            render::curve_segments(contacts.iter().map(|(_, g)| g))
+        } else if args.clearance.is_some() {
+            // The listed pairs are the near ones; the curve is where the surfaces cross.
+            render::curve_of_pairs(ca.mesh(), cb.mesh(), &ca.intersecting_pairs(&cb))
+        } else {
+            render::curve_of_pairs(ca.mesh(), cb.mesh(), &found.pairs)
+        };
+        render::render(ca.mesh(), cb.mesh(), &found.pairs, &curve, path)
+            .with_context(|| format!("--image {}: cannot write the image", path.display()))?;
     }
     bar.finish_and_clear();
     let report = Report {
