@@ -189,8 +189,8 @@ fn segments_are_six_comma_separated_numbers_in_query_and_scene() {
         &dir,
     ));
     assert_eq!(v["segment_hits"].as_array().unwrap().len(), 1, "{v}");
-    // The old six-word form is an error that shows the one form.
-    let err = error(&cga(
+    // The old six-word form is an error, and a wrong count says what the form is.
+    error(&cga(
         &[
             "scene",
             "s.txt",
@@ -204,5 +204,6 @@ fn segments_are_six_comma_separated_numbers_in_query_and_scene() {
         ],
         &dir,
     ));
-    assert!(err.contains("6 comma-separated numbers"), "{err}");
+    let err = error(&cga(&["scene", "s.txt", "--segment", "-1,0.5,0.5"], &dir));
+    assert!(err.contains("expected 6 comma-separated numbers"), "{err}");
 }
