@@ -170,6 +170,16 @@ pub enum Error {
         /// The squared length of the quaternion.
         norm_squared: f64,
     },
+    /// The 3×3 part `R` of a pose given as a matrix is not a rotation: it scales, shears or
+    /// reflects (`max |RᵀR − I|` above [`ROTATION_TOLERANCE`](crate::collider::ROTATION_TOLERANCE),
+    /// or `det R <= 0`).
+    #[error("the pose's 3x3 part is not a rotation (max |RᵀR − I| = {deviation:.3e}, det = {determinant}): a pose is a rotation and a translation, without scale, shear or reflection")]
+    NotARotation {
+        /// `max |RᵀR − I|` over the entries.
+        deviation: f64,
+        /// `det R`.
+        determinant: f64,
+    },
     /// Coordinates or translations so large that a certified answer is out of reach (its
     /// rounding bounds, or the squared distances of a distance query, would overflow `f64`).
     #[error("coordinates too large for a certified answer (|x| up to {magnitude:e}, the limit is {limit:e}): scale the meshes and translations down")]

@@ -262,6 +262,18 @@ fn obj_errors_name_the_line() {
     let bad = "v 0 0 0\nv 1 zz 0\nv 0 1 0\nf 1 2 3\n";
     let e = TriMesh::from_bytes(bad.as_bytes(), MeshFormat::Obj, "bad.obj").unwrap_err();
     assert!(e.to_string().starts_with("bad.obj:2:"), "{e}");
+    // A NaN or infinite coordinate: the line and the vertex's place among the `v` statements,
+    // as the OFF reader gives them (tobj reports neither).
+    for (value, shown) in [("nan", "NaN"), ("-inf", "-inf")] {
+        let bad = format!("v 0 0 0\n# a comment\nv 1 {value} 0\nv 0 1 0\nf 1 2 3\n");
+        let e = TriMesh::from_bytes(bad.as_bytes(), MeshFormat::Obj, "bad.obj").unwrap_err();
+        assert!(
+            matches!(&e, Error::NonFinite { at, vertex: 1, .. } if at.line == Some(3)),
+            "{e}"
+        );
+        assert!(e.to_string().starts_with("bad.obj:3: vertex 1"), "{e}");
+        assert!(e.to_string().contains(shown), "{e}");
+    }
     // quads are fan-triangulated, negative (relative) indices resolved
     let quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4 -3 -2 -1\n";
     let m = TriMesh::from_bytes(quad.as_bytes(), MeshFormat::Obj, "q.obj").unwrap();

@@ -1,4 +1,7 @@
-//! Printing multivectors in canonical blade names: `2e1 - 0.5e45`.
+//! Printing multivectors in canonical blade names: `2·e1 - 0.5·e45`.
+//!
+//! A coefficient and its blade are joined by `·` (U+00B7), so that `2·e12` cannot be read as the
+//! number `2e12` (two times ten to the twelfth).
 //!
 //! Used by the generated `Display` and `Debug` impls; public so hand-written types can print
 //! the same way.
@@ -7,7 +10,8 @@ use core::fmt::{self, Debug, Display, Formatter, Write};
 
 use crate::scalar::Ring;
 
-/// Writes `c₁b₁ ± c₂b₂ ...` skipping zero coefficients (`0` if all are zero). A negative
+/// Writes `c₁·b₁ ± c₂·b₂ ...` skipping zero coefficients (`0` if all are zero); the scalar part
+/// is written without a blade. A negative
 /// coefficient (one whose text starts with `-`) is written as a subtraction; a coefficient whose
 /// text contains an operator (e.g. a polynomial) is parenthesised. The formatter's precision, if
 /// any, is passed on to the coefficients.
@@ -62,9 +66,9 @@ fn write_with<T: Ring>(
         if *blade == "1" {
             f.write_str(magnitude)?;
         } else if needs_parentheses(magnitude) {
-            write!(f, "({magnitude}){blade}")?;
+            write!(f, "({magnitude})·{blade}")?;
         } else {
-            write!(f, "{magnitude}{blade}")?;
+            write!(f, "{magnitude}·{blade}")?;
         }
     }
     if first {

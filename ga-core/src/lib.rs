@@ -47,7 +47,7 @@
 //! | [`inverse`] | the checked inverse behind every generated type's `inverse()` |
 //! | [`linalg`] | the small exact-friendly linear solver used by [`inverse`] |
 //! | [`reference`](mod@reference) | a dense multivector with a run-time signature: the test oracle for the generated algebras |
-//! | [`format`](mod@format) | printing multivectors with canonical blade names (`2e1 - 0.5e45`) |
+//! | [`format`](mod@format) | printing multivectors with canonical blade names (`2·e1 - 0.5·e45`) |
 //! | [`interop`] | conversions to and from `glam`, `mint`, `bytemuck` (features of the same names) |
 //!
 //! # Choosing what to call

@@ -44,11 +44,20 @@ fn vector_times_vector_has_25_terms() {
 fn display_uses_canonical_names() {
     let v = Vector::new(2.0, 0.0, 0.0, 0.0, 0.0)
         + Bivector::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5);
-    assert_eq!(v.to_string(), "2e1 - 0.5e45");
+    assert_eq!(v.to_string(), "2·e1 - 0.5·e45");
     assert_eq!(Multivector::<f64>::zero().to_string(), "0");
+    // Once printed `2e12 - 1e13 + 1e23`, which reads as three numbers in scientific notation.
+    let b = Bivector::new(2.0, -1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    assert_eq!(b.to_string(), "2·e12 - 1·e13 + 1·e23");
+    let mut c = [0.0; 32];
+    (c[0], c[6], c[7], c[10]) = (3.0, 2.0, -1.0, 1.0);
+    assert_eq!(
+        Multivector::from_coefficients(c).to_string(),
+        "3 + 2·e12 - 1·e13 + 1·e23"
+    );
     assert_eq!(
         format!("{:?}", Vector::new(1.0, 0.0, 0.0, 0.0, -1.0)),
-        "1.0e1 - 1.0e5"
+        "1.0·e1 - 1.0·e5"
     );
 }
 

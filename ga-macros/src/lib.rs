@@ -24,7 +24,7 @@
 //! let b = Vector::new(0.0, 2.0);
 //! let r: Rotor<f64> = a * b; // the result type is inferred: scalar + bivector
 //! assert_eq!(r, Rotor::new(0.0, 2.0));
-//! assert_eq!(r.to_string(), "2e12");
+//! assert_eq!(r.to_string(), "2·e12");
 //! assert_eq!(a.scalar_product(&b), 0.0);
 //!
 //! // The same types over any ring, e.g. exact rationals.

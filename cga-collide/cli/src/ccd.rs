@@ -187,6 +187,10 @@ pub fn run(args: CcdArgs) -> Result<()> {
     if args.files.is_empty() {
         bail!("give at least one query file");
     }
+    // Before anything is told from the names (the kind, query file or mesh frame).
+    if let Some(f) = args.files.iter().find(|f| !f.exists()) {
+        bail!("{}: no such file (check the path)", f.display());
+    }
     if args.files.len() == 2 && !args.files.iter().any(|f| is_query_file(f)) {
         return run_step(&args);
     }

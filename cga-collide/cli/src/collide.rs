@@ -2,9 +2,7 @@
 //! every pair within a distance), with the contact class, an image, and the pairs and contact
 //! geometry written to files. `cga` alone runs it on built-in meshes (the demo).
 
-use std::fs;
-use std::io::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
@@ -17,7 +15,7 @@ use serde_json::json;
 use crate::args::{ModeArg, TwoMeshes};
 use crate::device::{self, DeviceArg, Gpu};
 use crate::placement::PoseArgs;
-use crate::{output, poses, render};
+use crate::{number, output, poses, render};
 
 /// The meshes, pose and image of the built-in demo (the placement of the README's benchmark),
 /// used for whatever of them is not given when `cga collide` gets no meshes.
@@ -196,14 +194,19 @@ pub fn run(args: CollideArgs) -> Result<()> {
     let (a_inside_b, b_inside_a) = (inside(&ca, &cb), inside(&cb, &ca));
     if let Some(path) = &args.pairs {
         bar.set_message("writing pairs");
-        write_lines(path, found.pairs.iter().map(|(i, j)| format!("{i} {j}")))?;
+        output::write_lines(
+            "--pairs",
+            path,
+            found.pairs.iter().map(|(i, j)| format!("{i} {j}")),
+        )?;
     }
     // The contact class (exact for closed meshes).
     let contact =
         (ca.mesh().is_closed() && cb.mesh().is_closed()).then(|| ca.contact_class(&cb).name());
-    // The exact intersection of every intersecting triangle pair, when a file or the image
-    // needs it.
-    let contacts = if collides && (args.contacts.is_some() || args.image.is_some()) {
+    // The exact intersection of every intersecting triangle pair, when the file needs it (the
+    // image draws a curve rounded to f64 unless these are at hand: their rational arithmetic
+    // costs a hundred times the query on coincident meshes).
+    let contacts = if collides && args.contacts.is_some() {
         bar.set_message("intersecting");
         ca.contacts(&cb)
     } else {
@@ -211,13 +214,14 @@ pub fn run(args: CollideArgs) -> Result<()> {
     };
     if let Some(path) = &args.contacts {
         bar.set_message("writing contacts");
-        write_lines(
+        output::write_lines(
+            "--contacts",
             path,
             contacts.iter().map(|((i, j), g)| {
                 let corners: Vec<String> = g
                     .points_f64()
                     .iter()
-                    .map(|p| format!("{} {} {}", p[0], p[1], p[2]))
+                    .map(|p| p.map(number::short).join(" "))
                     .collect();
                 format!("{i} {j} {}", corners.join(" "))
             }),
@@ -225,14 +229,18 @@ pub fn run(args: CollideArgs) -> Result<()> {
     }
     if let Some(path) = &args.image {
         bar.set_message("rendering");
-        render::render(
-            ca.mesh(),
-            cb.mesh(),
-            &found.pairs,
-            &render::curve_segments(contacts.iter().map(|(_, g)| g)),
-            path,
-        )
-        .with_context(|| format!("cannot write image {}", path.display()))?;
+        let curve = if !collides {
+            Vec::new()
+        } else if args.contacts.is_some() {
+            render::curve_segments(contacts.iter().map(|(_, g)| g))
+        } else if args.clearance.is_some() {
+            // The listed pairs are the near ones; the curve is where the surfaces cross.
+            render::curve_of_pairs(ca.mesh(), cb.mesh(), &ca.intersecting_pairs(&cb))
+        } else {
+            render::curve_of_pairs(ca.mesh(), cb.mesh(), &found.pairs)
+        };
+        render::render(ca.mesh(), cb.mesh(), &found.pairs, &curve, path)
+            .with_context(|| format!("--image {}: cannot write the image", path.display()))?;
     }
     bar.finish_and_clear();
     let report = Report {
@@ -248,18 +256,6 @@ pub fn run(args: CollideArgs) -> Result<()> {
         device: device::name(gpu.as_ref()),
     };
     report.print()
-}
-
-/// Writes `lines` to the file `path`, one per line.
-fn write_lines(path: &Path, lines: impl Iterator<Item = String>) -> Result<()> {
-    let mut out = std::io::BufWriter::new(
-        fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
-    );
-    for line in lines {
-        writeln!(out, "{line}")?;
-    }
-    out.flush()
-        .with_context(|| format!("cannot write {}", path.display()))
 }
 
 /// What `cga collide` found, and how long it took.
@@ -396,7 +392,10 @@ impl Report<'_> {
         );
         match args.clearance {
             Some(c) => {
-                println!("collides: {collides}; {pairs} triangle pairs within distance {c} (exact)")
+                println!(
+                    "collides: {collides}; {pairs} triangle pairs within distance {} (exact)",
+                    number::short(c)
+                )
             }
             None => println!("collides: {collides}; {pairs} intersecting triangle pairs (exact)"),
         }

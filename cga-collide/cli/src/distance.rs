@@ -10,6 +10,7 @@ use clap::Args;
 use serde_json::json;
 
 use crate::args::TwoMeshes;
+use crate::number;
 use crate::placement::PoseArgs;
 
 /// Minimum distance between two meshes, with witnesses and a certified error bound.
@@ -83,9 +84,14 @@ pub fn run(args: DistanceArgs) -> Result<()> {
         println!(
             "distance {} ± {:.3e} (certified) between triangle {i} of {a_spec} and {j} of \
              {b_spec} ({millis:.3} ms)",
-            d.distance, d.error_bound
+            number::short(d.distance),
+            d.error_bound
         );
-        println!("witness A {wa:?}\nwitness B {wb:?}");
+        println!(
+            "witness A {}\nwitness B {}",
+            number::point(wa),
+            number::point(wb)
+        );
         if let Some(e) = &exact {
             println!("exact squared distance {}", e.distance2);
         }

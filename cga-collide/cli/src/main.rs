@@ -10,6 +10,7 @@ mod collide;
 mod device;
 mod distance;
 mod mesh;
+mod number;
 mod output;
 mod placement;
 mod poses;

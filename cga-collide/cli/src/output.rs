@@ -1,10 +1,12 @@
 //! Output files (`--image`, `--pairs`, `--contacts`, `-o`, ...), checked before any work: a run
-//! that would only fail at the end, after minutes of work, fails at once instead.
+//! that would only fail at the end, after minutes of work, fails at once instead; and written
+//! with errors that name the option and the file.
 
 use std::fs::{self, OpenOptions};
+use std::io::{BufWriter, Write as _};
 use std::path::Path;
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
 
 /// Checks that the output file `path` of option `flag` can be written: the name ends in
 /// `.{extension}` when one is required (the format written), it is not a directory, its
@@ -61,6 +63,19 @@ pub fn check(flag: &str, path: &Path, extension: Option<&str>) -> Result<()> {
 /// [`check`] for an optional output.
 pub fn check_opt(flag: &str, path: Option<&Path>, extension: Option<&str>) -> Result<()> {
     path.map_or(Ok(()), |p| check(flag, p, extension))
+}
+
+/// Writes `lines` to the output file `path` of option `flag`, one per line; an error (at
+/// creation, at any write, at the final flush) names the option and the file: `--pairs
+/// /proc/version: cannot write the file: Input/output error (os error 5)`.
+pub fn write_lines(flag: &str, path: &Path, lines: impl Iterator<Item = String>) -> Result<()> {
+    let failed = |what: &str| format!("{flag} {}: cannot {what} the file", path.display());
+    let file = fs::File::create(path).with_context(|| failed("create"))?;
+    let mut out = BufWriter::new(file);
+    for line in lines {
+        writeln!(out, "{line}").with_context(|| failed("write"))?;
+    }
+    out.flush().with_context(|| failed("write"))
 }
 
 #[cfg(test)]

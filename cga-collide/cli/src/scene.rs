@@ -3,8 +3,10 @@
 //! The scene file has one object a line: a mesh path (relative to the scene file, or a built-in
 //! name) followed by 6 numbers `rx ry rz tx ty tz` (degrees about x, then y, then z, then a
 //! translation: the `--rotate`/`--translate` convention) or 12 numbers (a row-major 3×4
-//! `[R | t]`). `#` starts a comment; blank lines are skipped. A mesh named on several lines is
-//! loaded and built once and placed many times. Objects are numbered from 0 in line order.
+//! `[R | t]`, whose `R` must be a rotation: the library's [`pose_from_matrix`] check, the one
+//! the Python binding applies to 4×4 poses). `#` starts a comment; blank lines are skipped. A
+//! mesh named on several lines is loaded and built once and placed many times. Objects are
+//! numbered from 0 in line order. Every error about a line names the file and the line.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -12,14 +14,16 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
-use cga_collide::collider::{pose_from_degrees, Collider};
-use cga_collide::nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, UnitQuaternion};
+use cga_collide::collider::{pose_from_degrees, pose_from_matrix, Collider};
+use cga_collide::nalgebra::{Isometry3, Matrix3, Point3};
 use cga_collide::scene::{ObjectId, Scene};
 use cga_collide::Segment;
 use clap::Args;
 use serde_json::json;
 
+use crate::args::parse_numbers;
 use crate::mesh::load_mesh;
+use crate::number;
 
 /// Every pair of objects of a scene file that touch (exact), or are within a clearance, or the
 /// nearest pair; the objects a segment hits, in order.
@@ -34,15 +38,16 @@ pub struct SceneArgs {
     /// Also find the nearest pair and its certified distance.
     #[arg(long)]
     nearest: bool,
-    /// Also list every object the segment from (X0, Y0, Z0) to (X1, Y1, Z1) meets, in order
-    /// along it, each with its first hit (exact parameter, rounded): the first is the first hit.
+    /// Also list every object the segment `x0,y0,z0,x1,y1,z1` meets (as `cga query
+    /// --segment`), in order along it, each with its first hit (exact parameter, rounded): the
+    /// first is the first hit.
     #[arg(
         long,
-        num_args = 6,
-        allow_negative_numbers = true,
-        value_names = ["X0", "Y0", "Z0", "X1", "Y1", "Z1"]
+        value_name = "X0,Y0,Z0,X1,Y1,Z1",
+        value_parser = parse_numbers::<6>,
+        allow_hyphen_values = true
     )]
-    segment: Option<Vec<f64>>,
+    segment: Option<[f64; 6]>,
     /// Poses to move every object to (a second scene file with the same objects in the same
     /// order), then ask again: the time of an update step and its question.
     #[arg(long, value_name = "FILE")]
@@ -62,6 +67,8 @@ pub struct SceneArgs {
 struct Line {
     mesh: String,
     pose: Isometry3<f64>,
+    /// `FILE:LINE`, for errors about this object.
+    at: String,
 }
 
 /// Reads a scene file: its objects in line order.
@@ -94,15 +101,16 @@ fn read(path: &Path) -> Result<Vec<Line>> {
             12 => {
                 let n = &numbers;
                 let m = Matrix3::new(n[0], n[1], n[2], n[4], n[5], n[6], n[8], n[9], n[10]);
-                let rotation = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix(&m));
-                Isometry3::from_parts(Translation3::new(n[3], n[7], n[11]), rotation)
+                // Never the nearest rotation: that would answer for other shapes than written.
+                pose_from_matrix(&m, [n[3], n[7], n[11]])
+                    .with_context(|| format!("{at}: the 12 numbers are a row-major [R | t]"))?
             }
             n => bail!(
                 "{at}: expected a mesh then 6 numbers (rx ry rz tx ty tz, degrees) or 12 (a \
                  row-major 3x4 [R | t]), found {n} numbers"
             ),
         };
-        out.push(Line { mesh, pose });
+        out.push(Line { mesh, pose, at });
     }
     Ok(out)
 }
@@ -119,7 +127,7 @@ fn colliders(lines: &[Line], dir: &Path) -> Result<HashMap<String, Arc<Collider>
             } else {
                 line.mesh.clone()
             };
-            let mesh = load_mesh(&spec, "")?;
+            let mesh = load_mesh(&spec, "").with_context(|| line.at.clone())?;
             out.insert(line.mesh.clone(), Arc::new(Collider::new(mesh)));
         }
     }
@@ -222,7 +230,7 @@ pub fn run(args: SceneArgs) -> Result<()> {
     }
     if let Some(v) = &args.segment {
         let segment = Segment::new(Point3::new(v[0], v[1], v[2]), Point3::new(v[3], v[4], v[5]))
-            .context("--segment: the end points must be finite")?;
+            .context("--segment")?;
         let (hits, time) = best_of(args.repeat, || Ok(scene.segment_hits_along(&segment)?))?;
         value["millis_segment"] = json!(millis(time));
         value["segment_hits"] = json!(hits
@@ -238,37 +246,74 @@ pub fn run(args: SceneArgs) -> Result<()> {
     if args.json {
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
-        let what = match args.clearance {
-            Some(c) => format!("within {c}"),
-            None => "touching".into(),
-        };
-        println!(
-            "{}: {} objects ({} meshes), {} pairs {what} (exact; build {:.2} ms, query {:.2} ms)",
-            args.file.display(),
-            lines.len(),
-            built.len(),
-            pairs.len(),
-            value["millis_build"].as_f64().unwrap_or(0.0),
-            value["millis_query"].as_f64().unwrap_or(0.0),
-        );
-        for [a, b] in index_pairs(&pairs) {
-            println!("{a} {b}");
-        }
-        if let Some(n) = value.get("nearest") {
-            println!("nearest {n}");
-        }
-        if let Some(hits) = value.get("segment_hits").and_then(|h| h.as_array()) {
-            println!(
-                "segment: {} objects hit, first hits in order along it",
-                hits.len()
-            );
-            for h in hits {
-                println!(
-                    "hit {} at t = {} (triangle {}, point {})",
-                    h["object"], h["parameter"], h["triangle"], h["point"]
-                );
-            }
-        }
+        print_text(&args, &value);
     }
     Ok(())
+}
+
+/// The text form of `value` (the JSON result): the pairs, then the moved step, the nearest
+/// pair and the segment's hits when asked for.
+fn print_text(args: &SceneArgs, value: &serde_json::Value) {
+    let what = match args.clearance {
+        Some(c) => format!("within {}", number::short(c)),
+        None => "touching".into(),
+    };
+    let float = |v: &serde_json::Value| number::short(v.as_f64().unwrap_or(f64::NAN));
+    let pairs = |v: &serde_json::Value| {
+        let list = v.as_array().map(Vec::as_slice).unwrap_or_default();
+        for p in list {
+            println!("{} {}", p[0], p[1]);
+        }
+        list.len()
+    };
+    let count = value["pairs"].as_array().map_or(0, Vec::len);
+    println!(
+        "{}: {} objects ({} meshes), {count} pairs {what} (exact; build {:.2} ms, query {:.2} ms)",
+        args.file.display(),
+        value["objects"],
+        value["meshes"],
+        value["millis_build"].as_f64().unwrap_or(0.0),
+        value["millis_query"].as_f64().unwrap_or(0.0),
+    );
+    pairs(&value["pairs"]);
+    if let Some(moved) = &args.moved {
+        let count = value["moved_pairs"].as_array().map_or(0, Vec::len);
+        println!(
+            "moved to {}: {count} pairs {what} (exact; move and query {:.2} ms)",
+            moved.display(),
+            value["millis_move_and_query"].as_f64().unwrap_or(0.0),
+        );
+        pairs(&value["moved_pairs"]);
+    }
+    if args.nearest {
+        match value.get("nearest") {
+            Some(n) => println!(
+                "nearest pair {} {}: distance {} ± {} (certified; {:.2} ms)",
+                n["pair"][0],
+                n["pair"][1],
+                float(&n["distance"]),
+                float(&n["error_bound"]),
+                value["millis_nearest"].as_f64().unwrap_or(0.0),
+            ),
+            None => println!("nearest pair: none (fewer than two objects)"),
+        }
+    }
+    if let Some(hits) = value.get("segment_hits").and_then(|h| h.as_array()) {
+        println!(
+            "segment: {} objects hit, first hits in order along it",
+            hits.len()
+        );
+        for h in hits {
+            let p = &h["point"];
+            println!(
+                "hit {} at t = {} (triangle {}, point [{}, {}, {}])",
+                h["object"],
+                float(&h["parameter"]),
+                h["triangle"],
+                float(&p[0]),
+                float(&p[1]),
+                float(&p[2])
+            );
+        }
+    }
 }

@@ -1,12 +1,10 @@
 //! `cga self-intersect MESH`: every pair of triangles of one mesh that meet anywhere other than
 //! in the vertices or edge they share (exact).
 
-use std::fs;
-use std::io::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 
 use cga_collide::bounding::BuildStrategy;
 use cga_collide::collider::Collider;
@@ -44,13 +42,11 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     let millis = start.elapsed().as_secs_f64() * 1e3;
     let stages = cga_collide::testing::stage_counts();
     if let Some(path) = &args.pairs {
-        let mut out = std::io::BufWriter::new(
-            fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
-        );
-        for (i, j) in &pairs {
-            writeln!(out, "{i} {j}")?;
-        }
-        out.flush()?;
+        output::write_lines(
+            "--pairs",
+            path,
+            pairs.iter().map(|(i, j)| format!("{i} {j}")),
+        )?;
     }
     if args.json {
         let value = json!({

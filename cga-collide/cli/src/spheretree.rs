@@ -8,10 +8,18 @@
 //!   simultaneous descent of `SphereTree::collides`). The paper's own collision method, as
 //!   published and fixed, is research: the experiments package compares it
 //!   (`cga-experiment spheretree-collide`).
+//!
+//! A build deeper than [`estimate::PROBE_DEPTH`] is first estimated from a build to that depth,
+//! and refused, with the estimate and the deepest depth that fits, when it would not fit in the
+//! memory available.
+
+mod estimate;
 
 use std::fs;
 use std::path::PathBuf;
 use std::time::Instant;
+
+use estimate::Probe;
 
 use anyhow::{bail, Context, Result};
 use cga_collide::collider::Collider;
@@ -52,7 +60,9 @@ struct BuildArgs {
     /// bunny00, armadillo). Each must be closed.
     #[arg(required = true)]
     meshes: Vec<String>,
-    /// Octree depth (0: the root cell only).
+    /// Octree depth (0: the root cell only; at most 16). Each level has about four times the
+    /// spheres of the one above: a depth whose tree would not fit in the memory available is
+    /// refused before it is built, with the estimate and the deepest depth that fits.
     #[arg(long, default_value_t = 5)]
     depth: u32,
     /// Output file.
@@ -98,6 +108,8 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
     };
     output::check("--output", &args.output, None)?;
     let iso = args.pose.isometry();
+    // What the trees still to be built may take (each one built is held until all are written).
+    let mut budget = Budget::of_this_machine();
     let mut trees = Vec::new();
     let mut summary = Vec::new();
     for (k, spec) in args.meshes.iter().enumerate() {
@@ -109,8 +121,23 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
         }
         let start = Instant::now();
         let collider = Collider::new(mesh);
-        let (tree, report) = build(&collider, &options)
-            .with_context(|| format!("building the sphere tree of `{spec}`"))?;
+        let building = || format!("building the sphere tree of `{spec}`");
+        if args.depth > estimate::PROBE_DEPTH {
+            let probe_options = BuildOptions {
+                depth: estimate::PROBE_DEPTH,
+                ..options
+            };
+            let probe_start = Instant::now();
+            let (tree, report) = build(&collider, &probe_options).with_context(building)?;
+            let probe = Probe {
+                tree: &tree,
+                report: &report,
+                took: probe_start.elapsed(),
+                subdivide_full: args.subdivide_full,
+            };
+            budget = check_fits(&probe, args.depth, spec, budget)?;
+        }
+        let (tree, report) = build(&collider, &options).with_context(building)?;
         let millis = start.elapsed().as_secs_f64() * 1e3;
         summary.push(json!({
             "mesh": spec,
@@ -127,7 +154,7 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
         trees.push(tree);
     }
     fs::write(&args.output, format::write(&trees))
-        .with_context(|| format!("cannot write `{}`", args.output.display()))?;
+        .with_context(|| format!("--output {}: cannot write the file", args.output.display()))?;
     if args.json {
         println!(
             "{}",
@@ -148,6 +175,66 @@ fn build_cmd(args: BuildArgs) -> Result<()> {
         println!("wrote {} trees to {}", trees.len(), args.output.display());
     }
     Ok(())
+}
+
+/// The memory the builds may still use.
+#[derive(Debug, Clone, Copy)]
+struct Budget {
+    bytes: f64,
+    /// Whether `bytes` was read from the machine (or assumed).
+    measured: bool,
+}
+
+impl Budget {
+    /// The memory available now, or 8 GB where that cannot be read.
+    fn of_this_machine() -> Budget {
+        match estimate::available_memory() {
+            Some(bytes) => Budget {
+                bytes,
+                measured: true,
+            },
+            None => Budget {
+                bytes: 8e9,
+                measured: false,
+            },
+        }
+    }
+}
+
+/// Refuses a build to `depth` that would not fit in `budget` (with the estimate and the deepest
+/// depth that fits); otherwise the budget left for the next mesh.
+fn check_fits(probe: &Probe<'_>, depth: u32, spec: &str, budget: Budget) -> Result<Budget> {
+    let e = probe.at(depth);
+    if e.memory <= budget.bytes {
+        return Ok(Budget {
+            bytes: budget.bytes - e.memory,
+            ..budget
+        });
+    }
+    let available = if budget.measured {
+        format!("{} of memory is available", estimate::bytes(budget.bytes))
+    } else {
+        format!(
+            "the available memory cannot be read here, so {} is assumed",
+            estimate::bytes(budget.bytes)
+        )
+    };
+    let instead = match probe.deepest_within(depth, budget.bytes) {
+        Some(d) => format!(
+            "choose --depth {d} or less (depth {d}: about {:.1e} spheres, {})",
+            probe.at(d).spheres,
+            estimate::bytes(probe.at(d).memory)
+        ),
+        None => "free memory, or build fewer meshes into one file".to_owned(),
+    };
+    bail!(
+        "--depth {depth}: the sphere tree of `{spec}` would have about {:.1e} spheres and need \
+         about {} of memory (a {} file; about {} to build), but {available}: {instead}",
+        e.spheres,
+        estimate::bytes(e.memory),
+        estimate::bytes(e.file),
+        estimate::duration(e.seconds),
+    )
 }
 
 fn result_json(r: &CollisionResult) -> serde_json::Value {

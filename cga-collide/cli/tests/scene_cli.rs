@@ -35,7 +35,7 @@ fn touching_pairs_clearance_and_nearest() {
     assert!(text.status.success());
     assert!(String::from_utf8_lossy(&text.stdout).contains("1 pairs touching"));
     // A segment along y = z = 0.5 from x = -1 to 12: objects 0, 1, 2, 3 in order, first at x = 0.
-    let seg = ["--segment", "-1", "0.5", "0.5", "12", "0.5", "0.5"];
+    let seg = ["--segment", "-1,0.5,0.5,12,0.5,0.5"];
     let v = json(&cga(
         &[&["scene", "stack.txt", "--json"][..], &seg].concat(),
         &dir,

@@ -40,10 +40,11 @@ pub fn value_error(message: String) -> PyErr {
     CgaError::new_err(message)
 }
 
-/// How far the rotation part of a pose may be from a rotation: `max |RᵀR − I|`. The library's
+/// How far the rotation part of a pose may be from a rotation: `max |RᵀR − I|`, the library's
+/// rule for poses given as matrices (`cga scene`'s 12-number lines use it too). The library's
 /// own check on quaternions accepts `|q|²` in `[1/2, 2]` and normalises; a matrix this far from
 /// orthonormal is a mistake (a scale, a shear), not rounding.
-pub const ROTATION_TOLERANCE: f64 = 1e-6;
+pub const ROTATION_TOLERANCE: f64 = cga_collide::collider::ROTATION_TOLERANCE;
 
 /// Python's name of an object's type, for error messages.
 fn type_name(obj: &Bound<'_, PyAny>) -> String {

@@ -67,7 +67,7 @@ mod self_intersection;
 mod serial;
 
 pub use contacts::{ContactClass, Contacts};
-pub use pose::{pose_from_degrees, PosePair};
+pub use pose::{pose_from_degrees, pose_from_matrix, PosePair, ROTATION_TOLERANCE};
 
 use std::sync::OnceLock;
 

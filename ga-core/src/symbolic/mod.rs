@@ -26,7 +26,7 @@
 //! use ga_core::{cga::Vector, prelude::*, symbolic::Poly};
 //! let v = |s: &str| Vector::new(Poly::var(&format!("{s}1")), Poly::var(&format!("{s}2")), Poly::var(&format!("{s}3")), Poly::var(&format!("{s}4")), Poly::var(&format!("{s}5")));
 //! let ab = v("a").wedge(&v("b"));                       // a Bivector<Poly>, fully expanded
-//! println!("{ab}\n{}", ab.e12.to_latex());             // (a1*b2 - a2*b1)e12 + ...
+//! println!("{ab}\n{}", ab.e12.to_latex());             // (a1*b2 - a2*b1)·e12 + ...
 //! assert_eq!(ab.e12, Poly::parse("a1*b2 - a2*b1").unwrap());
 //! ```
 //!

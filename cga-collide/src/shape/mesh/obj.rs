@@ -95,7 +95,8 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
         let base = vertices.len();
         for (i, p) in mesh.positions.chunks_exact(3).enumerate() {
             let xyz = [p[0], p[1], p[2]];
-            check_finite(xyz, base + i, Location::file(file))?;
+            check_finite(xyz, base + i, Location::file(file))
+                .map_err(|e| non_finite_vertex(bytes, file).unwrap_or(e))?;
             vertices.push(Point3::from(xyz));
         }
         let count = mesh.positions.len() / 3;
@@ -120,6 +121,36 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Parsed, Error> {
         }
     }
     Ok((vertices, triangles))
+}
+
+/// The first `v` statement with a non-finite coordinate, as the error the OFF reader gives: its
+/// line, and the vertex's 0-based place among the file's `v` statements. `tobj` gives neither
+/// (it renumbers vertices and has no positions), so the text is scanned again, only on this
+/// error path.
+fn non_finite_vertex(bytes: &[u8], file: &str) -> Option<Error> {
+    let mut vertex = 0;
+    for (k, line) in bytes.split(|&b| b == b'\n').enumerate() {
+        let Ok(line) = std::str::from_utf8(line) else {
+            continue;
+        };
+        let mut words = line.split_whitespace();
+        if words.next() != Some("v") {
+            continue;
+        }
+        let value = words
+            .take(3)
+            .filter_map(|w| w.parse::<f64>().ok())
+            .find(|x| !x.is_finite());
+        if let Some(value) = value {
+            return Some(Error::NonFinite {
+                at: Location::line(file, k + 1),
+                vertex,
+                value,
+            });
+        }
+        vertex += 1;
+    }
+    None
 }
 
 /// What went wrong, in words a user can act on (tobj's own messages are terse: "read error").
