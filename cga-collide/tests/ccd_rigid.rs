@@ -1,16 +1,51 @@
 //! Two colliders moving between poses (`Collider::contacts_during`, the trees refitted to swept
 //! boxes) against the same motion as one deforming mesh (`motion::step_self_contacts`, its own
-//! swept-box trees): the same touching pairs and the same first contact.
+//! swept-box trees): the same touching pairs; and the first contact time brackets the earliest
+//! root of those pairs, each computed by the independent exact oracle (`testing::ccd_oracle`).
 
 use std::collections::BTreeSet;
 
+use std::cmp::Ordering;
+
 use cga_collide::motion::{step_self_contacts, MotionPair};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
+use cga_collide::testing::ccd_oracle;
 use cga_collide::{Collider, TriMesh};
 use proptest::prelude::*;
 
 fn pose(t: [f64; 3], r: [f64; 3]) -> Isometry3<f64> {
     Isometry3::new(Vector3::from(t), Vector3::from(r))
+}
+
+/// Each vertex of `m` at its two poses, as `[start, end]`.
+fn tracks(m: &TriMesh, p: [&Isometry3<f64>; 2]) -> Vec<[[f64; 3]; 2]> {
+    m.vertices()
+        .iter()
+        .map(|v| p.map(|pose| (pose * v).coords.into()))
+        .collect()
+}
+
+/// The pair's earliest contact time, by the exact oracle (`None`: it never touches).
+fn oracle_first_contact(
+    pair: &MotionPair,
+    ta: &[[[f64; 3]; 2]],
+    tb: &[[[f64; 3]; 2]],
+    (fa, fb): (&[[u32; 3]], &[[u32; 3]]),
+) -> Option<ccd_oracle::Algebraic> {
+    let (a, b) = (|i: u32| ta[i as usize], |i: u32| tb[i as usize]);
+    match *pair {
+        MotionPair::VertexFace(v, f) => {
+            let [x, y, z] = fb[f as usize];
+            ccd_oracle::vertex_face_first_contact(&[a(v), b(x), b(y), b(z)])
+        }
+        MotionPair::FaceVertex(f, v) => {
+            let [x, y, z] = fa[f as usize];
+            ccd_oracle::vertex_face_first_contact(&[b(v), a(x), a(y), a(z)])
+        }
+        MotionPair::EdgeEdge(e, g) => {
+            ccd_oracle::edge_edge_first_contact(&[a(e[0]), a(e[1]), b(g[0]), b(g[1])])
+        }
+    }
 }
 
 /// The pairs joining the two parts of the merged mesh, as `MotionPair`s.
@@ -19,7 +54,7 @@ fn merged_pairs(
     b: &TriMesh,
     pa: [&Isometry3<f64>; 2],
     pb: [&Isometry3<f64>; 2],
-) -> (BTreeSet<MotionPair>, Option<(f64, f64)>) {
+) -> BTreeSet<MotionPair> {
     let na = a.vertices().len() as u32;
     let fa = a.num_triangles() as u32;
     let place = |m: &TriMesh, p: &Isometry3<f64>| -> Vec<Point3<f64>> {
@@ -48,7 +83,7 @@ fn merged_pairs(
             pairs.insert(MotionPair::EdgeEdge(e, [g[0] - na, g[1] - na]));
         }
     }
-    (pairs, None)
+    pairs
 }
 
 proptest! {
@@ -73,7 +108,7 @@ proptest! {
         let p1 = if grid { Isometry3::translation(p1.translation.x, p1.translation.y, p1.translation.z) } else { p1 };
         let still = Isometry3::identity();
         let ours = ca.contacts_during([&p0, &p1], &cb, [&still, &still], 1e-12).unwrap();
-        let (expected, _) = merged_pairs(&a, &b, [&p0, &p1], [&still, &still]);
+        let expected = merged_pairs(&a, &b, [&p0, &p1], [&still, &still]);
         let got: BTreeSet<MotionPair> = ours.pairs.iter().copied().collect();
         prop_assert_eq!(&got, &expected);
         prop_assert_eq!(ours.first_contact.is_some(), !expected.is_empty());
@@ -81,6 +116,22 @@ proptest! {
             prop_assert!(first.width() <= 1e-12 || first.lo().next_up() >= first.hi());
             prop_assert!(!ours.first_pairs.is_empty());
             prop_assert!(ours.first_pairs.iter().all(|p| got.contains(p)));
+            // lo <= t* <= hi for t* the earliest of the pairs' exact first contacts: none
+            // before lo, at least one at or before hi, and each of those among `first_pairs`.
+            let (ta, tb) = (tracks(&a, [&p0, &p1]), tracks(&b, [&still, &still]));
+            let mut attained = false;
+            for pair in &expected {
+                let root = oracle_first_contact(pair, &ta, &tb, (a.triangles(), b.triangles()));
+                let Some(mut root) = root else {
+                    return Err(TestCaseError::fail(format!("{pair:?} touches, not for the oracle")));
+                };
+                prop_assert_ne!(root.cmp_f64(first.lo()), Ordering::Less, "{:?} before lo", pair);
+                if root.cmp_f64(first.hi()) != Ordering::Greater {
+                    attained = true;
+                    prop_assert!(ours.first_pairs.contains(pair), "{:?} not in first_pairs", pair);
+                }
+            }
+            prop_assert!(attained, "no pair's contact at or before {}", first.hi());
         }
     }
 }

@@ -71,7 +71,8 @@ fn cloth_funnel_step_contacts_equal_the_exact_truth() {
     let ours_ee: BTreeSet<([u32; 2], [u32; 2])> = contacts.edge_edge.iter().copied().collect();
     assert_eq!(ours_vf, true_vf);
     assert_eq!(ours_ee, true_ee);
-    // The swept-box candidates are the dataset's broad phase (closed boxes, no inflation).
+    // Our own broad phase's candidate counts (swept boxes, closed, no inflation, pairs sharing
+    // a vertex left out); the dataset ships only the candidates Tight Inclusion flags.
     assert_eq!(
         (
             contacts.vertex_face_candidates,

@@ -1,6 +1,11 @@
 //! Self-intersection against an exact rational oracle: the intersection of two triangles is
-//! the convex hull of the end points of each edge's clip against the other triangle, and a pair
-//! is reported exactly when one of those end points lies outside the shared vertex or edge.
+//! the convex hull of the end points of each edge's clip against the other triangle (a segment
+//! or a point when that triangle is degenerate), and a pair is reported exactly when one of
+//! those end points lies outside what the two share: the shared vertex, the shared edge, or
+//! for a duplicated degenerate triangle the segment it is.
+//!
+//! The generated meshes run both ways a collider decides self-intersection: under
+//! 32 triangles (the crate's `EAGER_TREE_MIN`) a scan without a tree, from 32 on the box tree.
 
 use cga_collide::ga_core::scalar::{rational_from_f64, Rational, Ring};
 use cga_collide::nalgebra::Point3;
@@ -40,9 +45,18 @@ fn one() -> Rational {
     <Rational as Ring>::one()
 }
 
-/// The parameter interval of segment `ab` inside the non-degenerate triangle `t`.
+fn is_zero3(v: &Q3) -> bool {
+    v.iter().all(|c| c.is_zero())
+}
+
+/// The parameter interval of segment `ab` inside the closed triangle `t`, which may be
+/// degenerate (then it is the segment between its two farthest corners, or a point).
 fn clip(a: &Q3, b: &Q3, t: &[Q3; 3]) -> Option<(Rational, Rational)> {
     let n = cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0]));
+    if is_zero3(&n) {
+        let (c, d) = extremes(t);
+        return clip_segment(a, b, &c, &d);
+    }
     // Inside iff every edge function is >= 0; each is affine along the segment.
     let edge = |x: &Q3, i: usize| dot(&cross(&sub(&t[(i + 1) % 3], &t[i]), &sub(x, &t[i])), &n);
     let (da, db) = (dot(&n, &sub(a, &t[0])), dot(&n, &sub(b, &t[0])));
@@ -76,17 +90,79 @@ fn clip(a: &Q3, b: &Q3, t: &[Q3; 3]) -> Option<(Rational, Rational)> {
         .then_some((s.clone(), s))
 }
 
+/// The two corners of a degenerate (collinear) triangle farthest apart: its hull is their
+/// segment (a point when they are equal).
+fn extremes(t: &[Q3; 3]) -> (Q3, Q3) {
+    let len2 = |i: usize, j: usize| {
+        let d = sub(&t[i], &t[j]);
+        dot(&d, &d)
+    };
+    let (i, j) = [(0, 1), (1, 2), (0, 2)]
+        .into_iter()
+        .max_by(|&(a, b), &(c, d)| len2(a, b).cmp(&len2(c, d)))
+        .unwrap();
+    (t[i].clone(), t[j].clone())
+}
+
+/// The parameter interval of segment `ab` on the closed segment `cd` (either may be a point).
+fn clip_segment(a: &Q3, b: &Q3, c: &Q3, d: &Q3) -> Option<(Rational, Rational)> {
+    let u = sub(b, a);
+    let uu = dot(&u, &u);
+    if uu.is_zero() {
+        return on_segment(a, c, d).then(|| (zero(), zero()));
+    }
+    let e = sub(d, c);
+    let ca = sub(c, a);
+    let n = cross(&u, &e);
+    if is_zero3(&n) {
+        // Parallel (or `cd` a point): only a collinear overlap counts.
+        if !is_zero3(&cross(&u, &ca)) {
+            return None;
+        }
+        let (tc, td) = (dot(&ca, &u) / &uu, dot(&sub(d, a), &u) / &uu);
+        let (lo, hi) = if tc <= td { (tc, td) } else { (td, tc) };
+        let (lo, hi) = (lo.max(zero()), hi.min(one()));
+        return (lo <= hi).then_some((lo, hi));
+    }
+    if !dot(&n, &ca).is_zero() {
+        return None; // skew lines
+    }
+    let nn = dot(&n, &n);
+    let t = dot(&cross(&ca, &e), &n) / &nn;
+    let s = dot(&cross(&ca, &u), &n) / &nn;
+    let unit = |x: &Rational| !x.is_negative() && *x <= one();
+    (unit(&t) && unit(&s)).then(|| (t.clone(), t))
+}
+
+/// Whether `x` lies on the closed segment `uv` (the point `u` when `u == v`).
 fn on_segment(x: &Q3, u: &Q3, v: &Q3) -> bool {
     let (d, w) = (sub(v, u), sub(x, u));
+    if is_zero3(&d) {
+        return is_zero3(&w);
+    }
     cross(&d, &w).iter().all(|c| c.is_zero()) && {
         let t = dot(&w, &d);
         !t.is_negative() && t <= dot(&d, &d)
     }
 }
 
-/// The oracle: do the non-degenerate triangles meet outside their shared vertices/edge?
+fn is_degenerate(t: &[Q3; 3]) -> bool {
+    is_zero3(&cross(&sub(&t[1], &t[0]), &sub(&t[2], &t[0])))
+}
+
+/// The oracle: do the triangles (degenerate or not) meet outside what they share?
 fn oracle(p: &[Q3; 3], r: &[Q3; 3]) -> bool {
-    let shared: Vec<&Q3> = p.iter().filter(|x| r.contains(x)).collect();
+    let mut shared: Vec<&Q3> = Vec::new();
+    for x in p.iter().filter(|x| r.contains(x)) {
+        if !shared.contains(&x) {
+            shared.push(x);
+        }
+    }
+    if shared.len() == 3 {
+        // The same three positions: a proper triangle meets itself in its interior; a
+        // degenerate one is the segment between its farthest corners, all of it shared.
+        return !is_degenerate(p);
+    }
     let mut ends = Vec::new();
     for (s, t) in [(p, r), (r, p)] {
         for i in 0..3 {
@@ -101,7 +177,7 @@ fn oracle(p: &[Q3; 3], r: &[Q3; 3]) -> bool {
         [] => true,
         [v] => x != *v,
         [u, v] => !on_segment(x, u, v),
-        _ => false, // the same triangle: handled by the caller
+        _ => unreachable!("three shared positions are handled above"),
     })
 }
 
@@ -112,8 +188,7 @@ fn oracle_pairs(mesh: &TriMesh) -> Vec<(u32, u32)> {
     let mut out = Vec::new();
     for i in 0..tris.len() {
         for j in i + 1..tris.len() {
-            let same = tris[i].iter().all(|x| tris[j].contains(x));
-            if same || oracle(&tris[i], &tris[j]) {
+            if oracle(&tris[i], &tris[j]) {
                 out.push((i as u32, j as u32));
             }
         }
@@ -121,23 +196,17 @@ fn oracle_pairs(mesh: &TriMesh) -> Vec<(u32, u32)> {
     out
 }
 
-fn non_degenerate(v: &[Point3<f64>], t: &[u32; 3]) -> bool {
-    let [a, b, c] = t.map(|i| q3(&v[i as usize]));
-    cross(&sub(&b, &a), &sub(&c, &a))
-        .iter()
-        .any(|x| !x.is_zero())
-}
-
-/// Small meshes on few distinct lattice points: shared vertices and edges, coplanar overlaps,
-/// folds and crossings are all frequent.
-fn lattice_mesh() -> impl Strategy<Value = TriMesh> {
+/// Meshes on few distinct lattice points: shared vertices and edges, coplanar overlaps, folds,
+/// crossings and degenerate faces (collinear or repeated corners) are all frequent. `triangles`
+/// sets how many, so that both the tree-less scan (under 32) and the tree (32 or more) run.
+fn lattice_mesh(triangles: std::ops::Range<usize>) -> impl Strategy<Value = TriMesh> {
     let point = (-2i32..=2, -2i32..=2, -1i32..=1)
         .prop_map(|(x, y, z)| Point3::new(f64::from(x), f64::from(y), f64::from(z)));
     (
-        proptest::collection::vec(point, 4..8),
-        proptest::collection::vec((0u32..8, 0u32..8, 0u32..8), 2..10),
+        proptest::collection::vec(point, 4..12),
+        proptest::collection::vec((0u32..12, 0u32..12, 0u32..12), triangles),
     )
-        .prop_filter_map("need triangles", |(mut v, t)| {
+        .prop_map(|(mut v, t)| {
             v.sort_by(|a, b| {
                 a.coords
                     .as_slice()
@@ -149,23 +218,90 @@ fn lattice_mesh() -> impl Strategy<Value = TriMesh> {
             let tris: Vec<[u32; 3]> = t
                 .into_iter()
                 .map(|(a, b, c)| [a % n, b % n, c % n])
-                .filter(|t| non_degenerate(&v, t))
                 .collect();
-            (tris.len() >= 2).then(|| TriMesh::new(v, tris).unwrap())
+            TriMesh::new(v, tris).unwrap()
         })
+}
+
+fn check_against_the_oracle(mesh: &TriMesh) -> Result<(), TestCaseError> {
+    let expected = oracle_pairs(mesh);
+    let c = Collider::new(mesh.clone());
+    let pairs = c.self_intersections();
+    prop_assert_eq!(&pairs, &expected);
+    prop_assert_eq!(c.self_intersects(), !expected.is_empty());
+    prop_assert_eq!(
+        &c.clone().with_mode(Mode::Brute).self_intersections(),
+        &expected
+    );
+    let once = Collider::with_strategy(mesh.clone(), BuildStrategy::Morton);
+    prop_assert_eq!(&once.self_intersections(), &expected);
+    Ok(())
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
 
+    /// Under 32 triangles: the scan without a tree.
     #[test]
-    fn matches_the_rational_oracle(mesh in lattice_mesh()) {
-        let c = Collider::new(mesh.clone());
-        let pairs = c.self_intersections();
-        prop_assert_eq!(&pairs, &oracle_pairs(&mesh));
-        prop_assert_eq!(c.self_intersects(), !pairs.is_empty());
-        prop_assert_eq!(&c.clone().with_mode(Mode::Brute).self_intersections(), &pairs);
+    fn small_meshes_match_the_rational_oracle(mesh in lattice_mesh(2..32)) {
+        check_against_the_oracle(&mesh)?;
     }
+
+    /// Only degenerate faces (each a segment or a point), tree path included.
+    #[test]
+    fn degenerate_faces_match_the_rational_oracle(
+        (v, t) in degenerate_lattice_mesh(),
+    ) {
+        check_against_the_oracle(&TriMesh::new(v, t).unwrap())?;
+    }
+}
+
+proptest! {
+    // Fewer cases: the oracle tests every pair of up to 63 triangles.
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// 32 triangles or more: the box tree (built with the collider).
+    #[test]
+    fn tree_path_matches_the_rational_oracle(mesh in lattice_mesh(32..64)) {
+        prop_assert!(mesh.num_triangles() >= 32);
+        check_against_the_oracle(&mesh)?;
+    }
+}
+
+/// Lattice points and faces each with a repeated corner or three collinear corners.
+fn degenerate_lattice_mesh() -> impl Strategy<Value = (Vec<Point3<f64>>, Vec<[u32; 3]>)> {
+    let point = (-2i32..=2, -2i32..=2, -1i32..=1).prop_map(|(x, y, z)| [x, y, z]);
+    let face = (point.clone(), point, -1i32..=2, 0u8..3);
+    (proptest::collection::vec(face, 2..48)).prop_map(|faces| {
+        let mut v: Vec<[i32; 3]> = Vec::new();
+        let mut index = |p: [i32; 3]| -> u32 {
+            match v.iter().position(|q| *q == p) {
+                Some(i) => i as u32,
+                None => {
+                    v.push(p);
+                    (v.len() - 1) as u32
+                }
+            }
+        };
+        let tris = faces
+            .into_iter()
+            .map(|(a, b, k, shape)| {
+                // The third corner on the line through a and b (a + k (b - a)), or a repeat.
+                let c = [0, 1, 2].map(|i| a[i] + k * (b[i] - a[i]));
+                let (ia, ib, ic) = (index(a), index(b), index(c));
+                match shape {
+                    0 => [ia, ib, ic],
+                    1 => [ia, ia, ib],
+                    _ => [ic, ia, ib],
+                }
+            })
+            .collect();
+        let v = v
+            .into_iter()
+            .map(|[x, y, z]| Point3::new(f64::from(x), f64::from(y), f64::from(z)))
+            .collect();
+        (v, tris)
+    })
 }
 
 fn p(x: f64, y: f64, z: f64) -> Point3<f64> {
@@ -254,11 +390,13 @@ proptest! {
 
     /// Faces in one axis-parallel plane are decided in its projection (corners at shared
     /// vertices, segments for degenerate faces); the same mesh in a tilted plane goes through
-    /// the general 3D tests. Both must give the same pairs, and the rational oracle where no
-    /// face is degenerate.
+    /// the general 3D tests. Both must give the same pairs as the rational oracle, degenerate
+    /// faces included.
     #[test]
     fn axis_plane_shortcuts_match_the_tilted_mesh((v, t) in planar_lattice_mesh()) {
-        let tilted = Collider::new(placed(&v, &t, |x, y| [x, y, x + 2.0 * y])).self_intersections();
+        let tilted_mesh = placed(&v, &t, |x, y| [x, y, x + 2.0 * y]);
+        let tilted = Collider::new(tilted_mesh.clone()).self_intersections();
+        prop_assert_eq!(&tilted, &oracle_pairs(&tilted_mesh));
         for flat in [
             placed(&v, &t, |x, y| [x, y, 0.5]),
             placed(&v, &t, |x, y| [-3.0, x, y]),
@@ -270,10 +408,6 @@ proptest! {
             prop_assert_eq!(&c.with_mode(Mode::Brute).self_intersections(), &tilted);
             let once = Collider::with_strategy(flat.clone(), BuildStrategy::Morton);
             prop_assert_eq!(&once.self_intersections(), &tilted);
-            let all_proper = t.iter().all(|tri| non_degenerate(flat.vertices(), tri));
-            if all_proper {
-                prop_assert_eq!(&tilted, &oracle_pairs(&flat));
-            }
         }
     }
 }

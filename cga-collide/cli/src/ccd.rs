@@ -26,9 +26,15 @@ pub struct CcdArgs {
     /// of one deforming mesh (any mesh format; same vertices and faces in the same order).
     #[arg(required = true, value_name = "FILE")]
     files: Vec<PathBuf>,
-    /// Width of the earliest-contact interval of a step (`FRAME0 FRAME1`).
+    /// Width of the earliest-contact interval of a step (`FRAME0 FRAME1`), and of each query
+    /// with `--first-contact`.
     #[arg(long, default_value_t = 1e-9)]
     tolerance: f64,
+    /// Query files: compute (and time) each query's earliest contact time to `--tolerance`, not
+    /// only whether it touches (as Tight Inclusion computes a time of impact); the JSON line
+    /// then has `"toi"`, each query's `[lo, hi]` or `null`.
+    #[arg(long)]
+    first_contact: bool,
     /// The kind of every query file; by default taken from a `vertex-face` or `edge-edge`
     /// folder in each file's path.
     #[arg(long, value_enum)]
@@ -60,23 +66,43 @@ impl From<Kind> for QueryKind {
 struct FileReport {
     kind: QueryKind,
     answers: Vec<bool>,
+    /// Each query's earliest contact interval, with `--first-contact`.
+    toi: Option<Vec<Option<[f64; 2]>>>,
     micros: Vec<f64>,
     false_positives: Option<usize>,
     false_negatives: Option<usize>,
 }
 
-fn answer_file(queries: &[MotionQuery], kind: QueryKind, repeat: u32) -> Result<FileReport> {
+/// Answers every query, timing each `repeat` times (the fastest kept): the yes/no test, or
+/// with `first_contact = Some(tolerance)` the earliest contact time to that tolerance.
+fn answer_file(
+    queries: &[MotionQuery],
+    kind: QueryKind,
+    repeat: u32,
+    first_contact: Option<f64>,
+) -> Result<FileReport> {
     let mut answers = Vec::with_capacity(queries.len());
     let mut micros = Vec::with_capacity(queries.len());
+    let mut tois = Vec::new();
     for (i, q) in queries.iter().enumerate() {
         let mut best = f64::INFINITY;
-        let mut answer = false;
+        let (mut answer, mut toi) = (false, None);
         for _ in 0..repeat {
             let start = Instant::now();
-            answer = q.touch(kind).with_context(|| format!("query {i}"))?;
+            match first_contact {
+                None => answer = q.touch(kind).with_context(|| format!("query {i}"))?,
+                Some(tolerance) => {
+                    let time = q
+                        .first_contact(kind, tolerance)
+                        .with_context(|| format!("query {i}"))?;
+                    answer = time.is_some();
+                    toi = time.map(|c| [c.lo(), c.hi()]);
+                }
+            }
             best = best.min(start.elapsed().as_secs_f64() * 1e6);
         }
         answers.push(answer);
+        tois.push(toi);
         micros.push(best);
     }
     let with_truth = queries.iter().all(|q| q.truth.is_some());
@@ -89,6 +115,7 @@ fn answer_file(queries: &[MotionQuery], kind: QueryKind, repeat: u32) -> Result<
     };
     Ok(FileReport {
         kind,
+        toi: first_contact.map(|_| tois),
         false_positives: with_truth.then(|| count(true)),
         false_negatives: with_truth.then(|| count(false)),
         answers,
@@ -205,7 +232,8 @@ pub fn run(args: CcdArgs) -> Result<()> {
     for file in &args.files {
         let kind = kind_of(file, args.kind)?;
         let queries = load_queries(file)?;
-        let report = answer_file(&queries, kind, args.repeat)
+        let first_contact = args.first_contact.then_some(args.tolerance);
+        let report = answer_file(&queries, kind, args.repeat, first_contact)
             .with_context(|| format!("{}", file.display()))?;
         let mut sorted = report.micros.clone();
         sorted.sort_by(f64::total_cmp);
@@ -231,6 +259,9 @@ pub fn run(args: CcdArgs) -> Result<()> {
                 "micros_median": med,
                 "micros_max": max,
             });
+            if let Some(toi) = &report.toi {
+                value["toi"] = json!(toi);
+            }
             if let (Some(p), Some(n)) = (report.false_positives, report.false_negatives) {
                 value["false_positives"] = json!(p);
                 value["false_negatives"] = json!(n);

@@ -47,6 +47,25 @@ fn query_files_report_answers_and_truth() {
         &dir,
     ));
     assert_eq!(v["answers"], serde_json::json!([true, false]));
+    // --first-contact: the same answers, and the contact at t = 1/2 within the tolerance.
+    let v = json(&cga(
+        &[
+            "ccd",
+            "--json",
+            "--repeat",
+            "1",
+            "--first-contact",
+            "--tolerance",
+            "1e-6",
+            "vertex-face/q.csv",
+        ],
+        &dir,
+    ));
+    assert_eq!(v["answers"], serde_json::json!([true, false]));
+    let toi = &v["toi"];
+    assert!(toi[1].is_null(), "{toi}");
+    let (lo, hi) = (toi[0][0].as_f64().unwrap(), toi[0][1].as_f64().unwrap());
+    assert!(lo <= 0.5 && 0.5 <= hi && hi - lo <= 1e-6, "{toi}");
 }
 
 #[test]
