@@ -13,12 +13,12 @@
 
 use std::hint::black_box;
 
-use cga_experiments::experiment::placement;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::{Isometry3, Point3};
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::testing::convex::ConvexMeshRef;
 use cga_collide::{Intersects, Triangle};
+use cga_experiments::experiment::placement;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 
 const N: usize = 1000;

@@ -12,8 +12,8 @@ use std::collections::BTreeMap;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::nalgebra::Point3;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
-use cga_experiments::experiment::placement;
 use cga_collide::testing::convex::ConvexMeshRef;
+use cga_experiments::experiment::placement;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

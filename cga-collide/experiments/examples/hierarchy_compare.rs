@@ -15,14 +15,14 @@
 
 use std::time::Instant;
 
-use cga_experiments::experiment::{calibrate_radius, placement, PAPER_PAIRS};
-use cga_experiments::plot::{svg_bar_charts, BarChart};
 use cga_collide::collider::Collider;
 use cga_collide::hierarchy::double_sphere::{DoubleSphereTree, InnerSphereKind};
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
 use cga_collide::hierarchy::sphere_tree::SphereTree;
 use cga_collide::shape::polyhedron::ConvexPolyhedron;
 use cga_collide::testing::convex::ConvexMeshRef;
+use cga_experiments::experiment::{calibrate_radius, placement, PAPER_PAIRS};
+use cga_experiments::plot::{svg_bar_charts, BarChart};
 
 /// What one method answered over the placements.
 #[derive(Default, Clone)]
