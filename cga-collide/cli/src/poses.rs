@@ -100,6 +100,11 @@ pub fn run(a: TriMesh, b: TriMesh, options: &Options<'_>) -> Result<()> {
         .context("cannot start the worker threads")?;
     let threads = pool.current_num_threads();
     let (ca, cb) = pool.install(|| rayon::join(|| Collider::new(a), || Collider::new(b)));
+    // The first pose query lays out both hierarchies for pose queries (once per collider) and
+    // grows the thread's scratch memory: building, kept out of the time per pose. (Its answer
+    // is not needed; a pose the batch cannot take is reported by the batch itself.)
+    let id = Isometry3::identity();
+    let _ = pool.install(|| ca.collides_at(&id, &cb, &id));
     let start = Instant::now();
     let (collides, pairs): (Vec<bool>, Option<Vec<usize>>) = if options.all_pairs {
         let pairs = pool

@@ -270,6 +270,22 @@ impl Relative {
         self.may_be_within(a, b, 0.0)
     }
 
+    /// How deeply `b`'s box carried into this frame overlaps `a`'s box: the least of
+    /// `reach - |d|` over the three axes of [`may_overlap`](Self::may_overlap), margin left
+    /// out (larger is deeper, negative is apart). A heuristic that orders a descent; it
+    /// decides nothing, so its rounding does not matter.
+    #[inline(always)]
+    pub(crate) fn depth(&self, a: &PoseNode, b: &PoseNode) -> f64 {
+        let (r, ar) = (&self.r, &self.abs_r);
+        let mut least = f64::INFINITY;
+        for i in 0..3 {
+            let d = r[i][0] * b.c[0] + r[i][1] * b.c[1] + r[i][2] * b.c[2] + self.t[i] - a.c[i];
+            let reach = ar[i][0] * b.e[0] + ar[i][1] * b.e[1] + ar[i][2] * b.e[2] + a.e[i];
+            least = least.min(reach - d.abs());
+        }
+        least
+    }
+
     /// The reach `w` to add on every axis of this frame for a clearance `c ≥ 0`:
     /// `w ≥ c √(1 + η) (1 + 16u)` (module docs, clearance), `+∞` if that overflows.
     #[inline]

@@ -152,18 +152,31 @@ impl<'a> PosedPair<'a> {
         self.rel.may_overlap(x, y) && self.inv.may_overlap(y, x)
     }
 
+    /// How deeply the boxes of nodes `x` of A and `y` of B overlap (the least slack of the
+    /// six axis tests, [`Relative::depth`]): orders the descent of a first-hit search, never
+    /// decides anything.
+    #[inline(always)]
+    fn depth(&self, x: &PoseNode, y: &PoseNode) -> f64 {
+        self.rel.depth(x, y).min(self.inv.depth(y, x))
+    }
+
     /// Whether two placed triangles meet (exact), behind a test of their exact boxes.
     #[inline(always)]
     fn meet(p: &Placed, q: &Placed) -> bool {
         p.bounds.overlaps(&q.bounds) && p.tri.intersects(&q.tri)
     }
 
-    /// The descent below the node pairs on `scratch.stack`: node pairs failing `near` are
-    /// pruned, and `visit(i, j)` gets every pair of placed triangles passing `keep`; stops
-    /// when `visit` breaks. `near` must be conservative for `keep` (module docs).
+    /// The descent below the node pairs on `scratch.stack`, each of which has passed `near`:
+    /// node pairs failing `near` are pruned, and `visit(i, j)` gets every pair of placed
+    /// triangles passing `keep`; stops when `visit` breaks. `near` must be conservative for
+    /// `keep` (module docs). With `deepest_first`, of two child pairs that both pass, the one
+    /// whose boxes overlap more deeply is descended first: a search that stops at its first
+    /// hit reaches one sooner where the meshes interpenetrate (what it finds may differ, not
+    /// whether it finds one).
     fn traverse_where<B>(
         &self,
         scratch: &mut Scratch,
+        deepest_first: bool,
         near: impl Fn(&PoseNode, &PoseNode) -> bool,
         keep: impl Fn(&Placed, &Placed) -> bool,
         mut visit: impl FnMut(u32, u32) -> ControlFlow<B>,
@@ -172,10 +185,7 @@ impl<'a> PosedPair<'a> {
         let (na, nb) = (ta.nodes(), tb.nodes());
         while let Some((i, j)) = scratch.stack.pop() {
             let (x, y) = (&na[i as usize], &nb[j as usize]);
-            if !near(x, y) {
-                continue;
-            }
-            match (x.is_leaf(), y.is_leaf()) {
+            let split_a = match (x.is_leaf(), y.is_leaf()) {
                 (true, true) => {
                     // Leaves meet many leaves of the other tree: each is placed once per
                     // traversal.
@@ -189,28 +199,63 @@ impl<'a> PosedPair<'a> {
                             }
                         }
                     }
+                    continue;
                 }
-                (false, true) => push_children(&mut scratch.stack, x.start, j, true),
-                (true, false) => push_children(&mut scratch.stack, i, y.start, false),
-                (false, false) => {
-                    if x.size >= y.size {
-                        push_children(&mut scratch.stack, x.start, j, true);
-                    } else {
-                        push_children(&mut scratch.stack, i, y.start, false);
-                    }
+                (false, true) => true,
+                (true, false) => false,
+                (false, false) => x.size >= y.size,
+            };
+            // Both children are read and tested together, before either is queued: their
+            // two node reads (adjacent cache lines) overlap instead of waiting one after the
+            // other, and pruned pairs never reach the stack.
+            let stack = &mut scratch.stack;
+            if split_a {
+                let s = x.start;
+                let (c0, c1) = (&na[s as usize], &na[s as usize + 1]);
+                let (k0, k1) = (near(c0, y), near(c1, y));
+                if k0 && k1 && deepest_first && self.depth(c1, y) > self.depth(c0, y) {
+                    stack.extend([(s, j), (s + 1, j)]);
+                    continue;
+                }
+                if k1 {
+                    stack.push((s + 1, j));
+                }
+                if k0 {
+                    stack.push((s, j));
+                }
+            } else {
+                let s = y.start;
+                let (c0, c1) = (&nb[s as usize], &nb[s as usize + 1]);
+                let (k0, k1) = (near(x, c0), near(x, c1));
+                if k0 && k1 && deepest_first && self.depth(x, c1) > self.depth(x, c0) {
+                    stack.extend([(i, s), (i, s + 1)]);
+                    continue;
+                }
+                if k1 {
+                    stack.push((i, s + 1));
+                }
+                if k0 {
+                    stack.push((i, s));
                 }
             }
         }
         ControlFlow::Continue(())
     }
 
-    /// Runs the traversal from the node pairs `start` with this thread's scratch memory.
+    /// The search for intersecting pairs from the node pairs `start`, deepest overlap first,
+    /// with this thread's scratch memory (for a `visit` that stops at its first pair).
     fn run<B>(
         &self,
         start: &[(u32, u32)],
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
-        self.run_where(start, |x, y| self.may_overlap(x, y), Self::meet, visit)
+        self.run_ordered(
+            start,
+            true,
+            |x, y| self.may_overlap(x, y),
+            Self::meet,
+            visit,
+        )
     }
 
     /// [`traverse_where`](Self::traverse_where) from the node pairs `start` with this
@@ -222,10 +267,25 @@ impl<'a> PosedPair<'a> {
         keep: impl Fn(&Placed, &Placed) -> bool,
         visit: impl FnMut(u32, u32) -> ControlFlow<B>,
     ) -> ControlFlow<B> {
+        self.run_ordered(start, false, near, keep, visit)
+    }
+
+    /// [`run_where`](Self::run_where), descending deepest overlap first if `deepest_first`.
+    fn run_ordered<B>(
+        &self,
+        start: &[(u32, u32)],
+        deepest_first: bool,
+        near: impl Fn(&PoseNode, &PoseNode) -> bool,
+        keep: impl Fn(&Placed, &Placed) -> bool,
+        visit: impl FnMut(u32, u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
         let (na, nb) = (self.a.pose_tree().nodes(), self.b.pose_tree().nodes());
         with_scratch(na.len(), nb.len(), |scratch| {
-            scratch.stack.extend_from_slice(start);
-            self.traverse_where(scratch, near, keep, visit)
+            let seeds = start.iter().copied();
+            scratch
+                .stack
+                .extend(seeds.filter(|&(i, j)| near(&na[i as usize], &nb[j as usize])));
+            self.traverse_where(scratch, deepest_first, near, keep, visit)
         })
     }
 
@@ -314,17 +374,6 @@ impl<'a> PosedPair<'a> {
             }
         }
         level
-    }
-}
-
-#[inline(always)]
-fn push_children(stack: &mut Vec<(u32, u32)>, i: u32, j: u32, split_a: bool) {
-    if split_a {
-        stack.push((i + 1, j));
-        stack.push((i, j));
-    } else {
-        stack.push((i, j + 1));
-        stack.push((i, j));
     }
 }
 
