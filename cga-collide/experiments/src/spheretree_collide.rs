@@ -71,7 +71,7 @@ pub fn run(args: CollideArgs) -> Result<()> {
     } else {
         format::read(&text).map_err(|e| {
             let hint = match e {
-                format::FormatError::UnexpectedEnd { .. } => {
+                cga_collide::Error::SphereTreeUnexpectedEnd { .. } => {
                     " (the file ends early: --lenient uses the trees that are complete)"
                 }
                 _ => "",
