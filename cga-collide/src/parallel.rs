@@ -42,14 +42,6 @@ mod sequential {
         }
     }
     impl<I: Iterator> FlatMapIter for I {}
-
-    /// rayon's `find_first` is `find` on one core.
-    pub(crate) trait FindFirst: Iterator + Sized {
-        fn find_first<P: FnMut(&Self::Item) -> bool>(mut self, predicate: P) -> Option<Self::Item> {
-            self.find(predicate)
-        }
-    }
-    impl<I: Iterator> FindFirst for I {}
 }
 
 /// How many threads the parallel calls would use here (1 without the `parallel` feature):

@@ -37,10 +37,8 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
     let collider = Collider::with_strategy(mesh, BuildStrategy::Morton);
     let build = start.elapsed();
     let start = Instant::now();
-    cga_collide::testing::reset_stage_counts();
     let pairs = collider.self_intersections();
     let millis = start.elapsed().as_secs_f64() * 1e3;
-    let stages = cga_collide::testing::stage_counts();
     if let Some(path) = &args.pairs {
         output::write_lines(
             "--pairs",
@@ -57,11 +55,6 @@ pub fn run(args: SelfIntersectArgs) -> Result<()> {
             "build_millis": build.as_secs_f64() * 1e3,
             "millis": millis,
             "mesh": args.mesh,
-            "exact_stages": {
-                "rescaled_filter": stages.rescaled_filter,
-                "expansion": stages.expansion,
-                "big_integer": stages.big_integer,
-            },
         });
         println!("{}", serde_json::to_string_pretty(&value)?);
     } else {
