@@ -19,6 +19,7 @@ mod render;
 mod scene;
 mod self_intersect;
 mod spheretree;
+mod tree_file;
 
 use std::backtrace::Backtrace;
 use std::panic::{self, AssertUnwindSafe};

@@ -25,13 +25,13 @@ use anyhow::{bail, Context, Result};
 use cga_collide::collider::Collider;
 use cga_collide::hierarchy::sphere_tree::format;
 use cga_collide::hierarchy::sphere_tree::octree::{build, BuildOptions};
-use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
 use clap::{Args, Subcommand};
 use serde_json::json;
 
 use crate::mesh::load_unit;
 use crate::output;
 use crate::placement::PoseArgs;
+use crate::tree_file::{read_tree_pair, result_json};
 
 /// Octree sphere trees: build them from meshes, test two for collision.
 #[derive(Args, Debug)]
@@ -237,48 +237,8 @@ fn check_fits(probe: &Probe<'_>, depth: u32, spec: &str, budget: Budget) -> Resu
     )
 }
 
-fn result_json(r: &CollisionResult) -> serde_json::Value {
-    json!({
-        "collides": r.collides,
-        "sphere_tests": r.sphere_tests,
-        "witness": r.witness.map(|(i, j)| [i, j]),
-        "listed_leaves": r.listed_leaves,
-    })
-}
-
 fn collide_cmd(args: CollideArgs) -> Result<()> {
-    let text = fs::read_to_string(&args.file)
-        .with_context(|| format!("cannot read `{}`", args.file.display()))?;
-    let name = args.file.display().to_string();
-    let trees: Vec<SphereTree> = if args.lenient {
-        let r = format::read_lenient(&text).with_context(|| format!("in `{name}`"))?;
-        if !r.is_complete() {
-            eprintln!(
-                "warning: `{name}` is incomplete: {} trees declared, {} complete",
-                r.declared_trees, r.complete_trees
-            );
-            for g in &r.gaps {
-                eprintln!("warning: {g}");
-            }
-        }
-        r.trees
-    } else {
-        format::read(&text).map_err(|e| {
-            let hint = match e {
-                cga_collide::Error::SphereTreeUnexpectedEnd { .. } => {
-                    " (the file ends early: --lenient uses the trees that are complete)"
-                }
-                _ => "",
-            };
-            anyhow::Error::new(e).context(format!("in `{name}`{hint}"))
-        })?
-    };
-    if trees.len() < 2 {
-        bail!(
-            "`{name}` holds {} tree(s); collide needs two: write a pair with `cga spheretree build A B -o FILE`",
-            trees.len()
-        );
-    }
+    let trees = read_tree_pair(&args.file, args.lenient, "collide")?;
     let (x, y) = (&trees[0], &trees[1]);
     let start = Instant::now();
     let r = x.collides(y);

@@ -9,6 +9,9 @@ mod double_spheres;
 #[path = "../../cli/src/output.rs"]
 mod output;
 mod spheretree_collide;
+// Reading a file of two sphere trees, shared with `cga spheretree collide`.
+#[path = "../../cli/src/tree_file.rs"]
+mod tree_file;
 
 use std::process::ExitCode;
 

@@ -3,16 +3,16 @@
 //! `SphereTree::collides` (the `cga spheretree collide` of the product), on the first two trees
 //! of a file in the paper's format; `both` checks that they agree.
 
-use std::fs;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
-use cga_collide::hierarchy::sphere_tree::format;
+use anyhow::Result;
 use cga_collide::hierarchy::sphere_tree::{CollisionResult, SphereTree};
 use cga_collide::testing::sphere_tree::{paper_method, paper_method_as_published};
 use clap::{Args, ValueEnum};
 use serde_json::json;
+
+use crate::tree_file::{read_tree_pair, result_json};
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 enum Method {
@@ -42,49 +42,9 @@ pub struct CollideArgs {
     json: bool,
 }
 
-fn result_json(r: &CollisionResult) -> serde_json::Value {
-    json!({
-        "collides": r.collides,
-        "sphere_tests": r.sphere_tests,
-        "witness": r.witness.map(|(i, j)| [i, j]),
-        "listed_leaves": r.listed_leaves,
-    })
-}
-
 /// Runs `cga-experiment spheretree-collide`.
 pub fn run(args: CollideArgs) -> Result<()> {
-    let text = fs::read_to_string(&args.file)
-        .with_context(|| format!("cannot read `{}`", args.file.display()))?;
-    let name = args.file.display().to_string();
-    let trees: Vec<SphereTree> = if args.lenient {
-        let r = format::read_lenient(&text).with_context(|| format!("in `{name}`"))?;
-        if !r.is_complete() {
-            eprintln!(
-                "warning: `{name}` is incomplete: {} trees declared, {} complete",
-                r.declared_trees, r.complete_trees
-            );
-            for g in &r.gaps {
-                eprintln!("warning: {g}");
-            }
-        }
-        r.trees
-    } else {
-        format::read(&text).map_err(|e| {
-            let hint = match e {
-                cga_collide::Error::SphereTreeUnexpectedEnd { .. } => {
-                    " (the file ends early: --lenient uses the trees that are complete)"
-                }
-                _ => "",
-            };
-            anyhow::Error::new(e).context(format!("in `{name}`{hint}"))
-        })?
-    };
-    if trees.len() < 2 {
-        bail!(
-            "`{name}` holds {} tree(s); the comparison needs two: write a pair with `cga spheretree build A B -o FILE`",
-            trees.len()
-        );
-    }
+    let trees = read_tree_pair(&args.file, args.lenient, "the comparison")?;
     let (x, y) = (&trees[0], &trees[1]);
     let nodes = [x.len(), y.len()];
     let timed = |f: fn(&SphereTree, &SphereTree) -> CollisionResult| {
