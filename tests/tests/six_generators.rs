@@ -94,7 +94,7 @@ fn six_generators_have_64_blades_in_canonical_order() {
 fn user_basis_names_name_fields_and_printing() {
     let v = named::Vector::new(2.0, -0.5);
     assert_eq!(v.plus, 2.0);
-    assert_eq!(v.to_string(), "2plus - 0.5minus");
+    assert_eq!(v.to_string(), "2·plus - 0.5·minus");
     let s: named::Spinor<f64> = v * named::Vector::new(0.0, 1.0);
     assert_eq!(s.plus_minus, 2.0);
     assert_eq!(named::BLADE_NAMES, ["1", "plus", "minus", "plus_minus"]);
