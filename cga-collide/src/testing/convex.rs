@@ -1,7 +1,7 @@
 //! An exact and fast intersection test for two convex solids given as closed triangle meshes.
 //!
 //! This is the independent reference of the double-sphere experiment
-//! (the `cga experiment` command of the `cga-cli` package): every answer of the sphere hierarchy is checked against it. It
+//! (`cga-experiment double-spheres`, of the unpublished `cga-experiments` package): every answer of the sphere hierarchy is checked against it. It
 //! shares nothing with the hierarchy but the exact predicates. It is test support (feature
 //! `testing`): the library's own answer for meshes is [`Collider::collides_solid`].
 //!
