@@ -2,8 +2,8 @@
 //! rounding cast), checked shapes, poses from `(4, 4)` homogeneous matrices, and the errors
 //! that say which argument was wrong and how.
 
-use cga_collide::collider::{pose_from_degrees, PosePair};
-use cga_collide::nalgebra::{Isometry3, Matrix3, Point3, Rotation3, Translation3, UnitQuaternion};
+use cga_collide::collider::{pose_from_degrees, pose_from_matrix, PosePair};
+use cga_collide::nalgebra::{Isometry3, Matrix3, Point3};
 use cga_collide::Error;
 use numpy::ndarray::{Array1, Array2, ArrayViewD, Dimension};
 use numpy::{
@@ -291,18 +291,15 @@ fn pose_of(m: &ArrayViewD<'_, f64>, name: &str) -> PyResult<Isometry3<f64>> {
             m[[3, 3]]
         )));
     }
+    // The library's one rotation check (the scene files' too); only the message is Python's.
     let r = Matrix3::from_fn(|i, j| m[[i, j]]);
-    let gram = r.transpose() * r - Matrix3::identity();
-    let off = gram.iter().fold(0.0f64, |acc, x| acc.max(x.abs()));
-    let det = r.determinant();
-    if off > ROTATION_TOLERANCE || det <= 0.0 {
-        return Err(value_error(format!(
-            "{name}: the upper-left 3x3 block is not a rotation (max |RᵀR − I| = {off:.3e}, det = {det}); \
+    pose_from_matrix(&r, [m[[0, 3]], m[[1, 3]], m[[2, 3]]]).map_err(|e| match e {
+        Error::NotARotation { deviation, determinant } => value_error(format!(
+            "{name}: the upper-left 3x3 block is not a rotation (max |RᵀR − I| = {deviation:.3e}, det = {determinant}); \
              a pose is a rotation and a translation, without scale, shear or reflection"
-        )));
-    }
-    let q = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(r));
-    Ok(Isometry3::from_parts(Translation3::new(m[[0, 3]], m[[1, 3]], m[[2, 3]]), q))
+        )),
+        other => value_error(format!("{name}: {other}")),
+    })
 }
 
 /// A pose from a `(4, 4)` homogeneous matrix.
