@@ -44,6 +44,44 @@ pub enum Error {
         /// The rejected value.
         value: f64,
     },
+    /// A coordinate, vector component or radius of a primitive is beyond
+    /// [`MAX_MAGNITUDE`](crate::shape::MAX_MAGNITUDE) (`2^500`), where certified answers would overflow.
+    #[error("{shape}: argument `{argument}` has the value {value:e}, beyond the limit {limit:e} for primitives; scale the scene down")]
+    CoordinateOutOfRange {
+        /// The shape, e.g. `"Cuboid"`.
+        shape: &'static str,
+        /// The argument name, e.g. `"centre"` or `"radius"`.
+        argument: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// The limit.
+        limit: f64,
+    },
+    /// One point of a point list (a convex hull's) was rejected; `index` is its position.
+    #[error("point {index}: {source}")]
+    InShapePoint {
+        /// Position of the point in the list (from 0).
+        index: usize,
+        /// Why it was rejected.
+        source: Box<Error>,
+    },
+    /// A clearance (the `c` of a `within_distance` query) is negative, NaN, infinite or beyond
+    /// [`MAX_MAGNITUDE`](crate::shape::MAX_MAGNITUDE).
+    #[error("clearance {value} is not a distance: give a finite number >= 0 (at most 2^500)")]
+    InvalidClearance {
+        /// The rejected value.
+        value: f64,
+    },
+    /// The generic queries cannot yet answer this pair of shape kinds exactly.
+    #[error("no exact {query} test for a {a} against a {b} yet")]
+    UnsupportedPair {
+        /// The query, e.g. `"intersects"`.
+        query: &'static str,
+        /// The first shape's kind.
+        a: &'static str,
+        /// The second shape's kind.
+        b: &'static str,
+    },
     /// An input of a conformal constructor (a coordinate, a scalar or a blade coefficient) is
     /// NaN or infinite.
     #[error("{constructor}: argument `{argument}` has a non-finite value ({value}); give finite numbers")]

@@ -28,6 +28,7 @@ pub(crate) mod intersects;
 pub(crate) mod prepared;
 pub(crate) mod segment_entry;
 pub(crate) mod separation;
+pub(crate) mod shapes;
 pub(crate) mod within_distance;
 
 pub use contact::{triangle_intersection, ContactGeometry, ExactPoint};
@@ -46,6 +47,9 @@ pub use intersects::{
     intersects_triangle_triangle, Intersects,
 };
 pub use segment_entry::segment_triangle_entry;
+pub use shapes::{
+    distance, distance_at, intersects, intersects_at, within_distance, within_distance_at,
+};
 pub use within_distance::{
     within_distance_ball_ball, within_distance_ball_sphere, within_distance_segment_ball,
     within_distance_segment_segment, within_distance_segment_sphere,

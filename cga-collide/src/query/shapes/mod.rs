@@ -1,0 +1,105 @@
+//! The generic queries over [`Shape`]: one entry point for every pair of solid primitives.
+//!
+//! [`intersects`], [`within_distance`] and [`distance`] take any two [`Shape`]s; the `_at`
+//! forms place them first by the crate's placement rule ([`Shape::placed`]). Every answer is
+//! exact for the shapes the `f64` values denote (closed sets: touching counts). The pairs are
+//! decided by two engines:
+//! * [`polytopal`]: shapes that are a convex polytope grown by a ball (points, segments,
+//!   triangles, cuboids, hulls, balls, capsules) and half-spaces;
+//! * [`round`]: every pair with a cylinder or a cone.
+
+use nalgebra::Isometry3;
+
+use crate::error::Error;
+use crate::query::CertifiedDistance;
+use crate::shape::Shape;
+
+pub(crate) mod polytopal;
+pub(crate) mod round;
+
+fn is_round(s: &Shape) -> bool {
+    matches!(s, Shape::Cylinder(_) | Shape::Cone(_))
+}
+
+fn check_clearance(c: f64) -> Result<(), Error> {
+    if c.is_finite() && c >= 0.0 && c <= crate::shape::MAX_MAGNITUDE {
+        Ok(())
+    } else {
+        Err(Error::InvalidClearance { value: c })
+    }
+}
+
+/// Exact: do the two closed shapes share a point?
+///
+/// ```
+/// use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::{Cuboid, HalfSpace}, Ball};
+/// let ground = HalfSpace::new(Point3::origin(), Vector3::z())?;
+/// let resting = Ball::new(Point3::new(0.0, 0.0, 1.0), 1.0)?; // touches the plane at the origin
+/// assert!(query::intersects(&ground.into(), &resting.into())?);
+/// # Ok::<(), cga_collide::Error>(())
+/// ```
+pub fn intersects(a: &Shape, b: &Shape) -> Result<bool, Error> {
+    a.check_range()?;
+    b.check_range()?;
+    if is_round(a) || is_round(b) {
+        round::intersects(a, b)
+    } else {
+        Ok(polytopal::intersects(a, b))
+    }
+}
+
+/// Exact: is the distance between the two closed shapes at most `c`? `c` must be finite and
+/// `>= 0` ([`Error::InvalidClearance`] otherwise).
+pub fn within_distance(a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
+    a.check_range()?;
+    b.check_range()?;
+    check_clearance(c)?;
+    if is_round(a) || is_round(b) {
+        round::within_distance(a, b, c)
+    } else {
+        Ok(polytopal::within_distance(a, b, c))
+    }
+}
+
+/// The minimum distance between the two shapes (`0` when they meet) with witnesses and a
+/// proved error bound.
+pub fn distance(a: &Shape, b: &Shape) -> Result<CertifiedDistance, Error> {
+    a.check_range()?;
+    b.check_range()?;
+    if is_round(a) || is_round(b) {
+        round::distance(a, b)
+    } else {
+        Ok(polytopal::distance(a, b))
+    }
+}
+
+/// [`intersects`] of the two shapes placed by their poses ([`Shape::placed`]).
+pub fn intersects_at(
+    a: &Shape,
+    pose_a: &Isometry3<f64>,
+    b: &Shape,
+    pose_b: &Isometry3<f64>,
+) -> Result<bool, Error> {
+    intersects(&a.placed(pose_a)?, &b.placed(pose_b)?)
+}
+
+/// [`within_distance`] of the two shapes placed by their poses ([`Shape::placed`]).
+pub fn within_distance_at(
+    a: &Shape,
+    pose_a: &Isometry3<f64>,
+    b: &Shape,
+    pose_b: &Isometry3<f64>,
+    c: f64,
+) -> Result<bool, Error> {
+    within_distance(&a.placed(pose_a)?, &b.placed(pose_b)?, c)
+}
+
+/// [`distance`] of the two shapes placed by their poses ([`Shape::placed`]).
+pub fn distance_at(
+    a: &Shape,
+    pose_a: &Isometry3<f64>,
+    b: &Shape,
+    pose_b: &Isometry3<f64>,
+) -> Result<CertifiedDistance, Error> {
+    distance(&a.placed(pose_a)?, &b.placed(pose_b)?)
+}
