@@ -11,17 +11,31 @@ to the same f64; the shapes mean the exact real values of those f64.
 
 Two families, written to OUT/generic/A-B.jsonl and OUT/near_contact/A-B.jsonl:
 
-generic       random sizes, orientations and positions (about half intersecting). `expected`
-              is only written where a floating-point certificate with a wide margin decides
-              it (a separating direction with gap > MARGIN, or a point inside both shapes by
-              MARGIN, both far above the rounding error of the check); the rare undecided
-              draws are dropped and drawn again.
-near_contact  configurations whose truth is known by construction (see `near_contact`):
-              exactly touching shapes (touching counts as intersecting), then the upper
-              shape moved by k ulps toward (intersecting) and away (disjoint), k = 1, 2, 4.
+generic       random sizes, orientations and positions, half intersecting, half not.
+              `expected` comes from a floating-point certificate with a wide margin (a
+              separating direction with gap >= MARGIN, or a point inside both shapes by
+              MARGIN, both far above the rounding error of the check); the few draws no
+              certificate decides are dropped and drawn again (so no generic pair is closer
+              to touching than about MARGIN).
+near_contact  configurations whose truth is known by construction (see the comment above
+              `dyadic`): a lower and an upper shape exactly touching at z = 1 (face, edge or
+              vertex of a box, a cylinder's cap, side or rim, a cone's apex, base or rim, a
+              capsule's end or side, a plane, hull faces and vertices, triangles flat, on an
+              edge or on a vertex; every pair of these features), and a ball on a cone's rim;
+              each exactly touching (touching counts as intersecting), then the upper shape
+              moved by k ulps toward (intersecting) and away (disjoint), k = 1, 2, 4.
 
-Needs numpy only. Fixed seed: the same files on every run.
+near_contact_scaled (only with --scaled E1,E2,...) the near-contact lines scaled by 2^E, exact,
+              so the same truth at other magnitudes (written to OUT/near_contact_scaled/).
+
+--check N re-decides N near-contact lines per polytopal pair type (cuboid, convex, triangle,
+half-space, and ball against half-space) with an independent exact test in rationals and
+fails on any disagreement.
+
+Needs numpy only. Fixed seed: the same files on every run (--scaled and --check do not change
+the other files).
 Usage: python3 shape_pairs.py [-o OUT] [--generic N] [--near-per-type N] [--seed S]
+                              [--scaled E1,E2,...] [--check N]
 """
 import argparse
 import itertools
@@ -703,6 +717,107 @@ def generic(rng, ka, kb, count):
     return lines, dropped
 
 
+# ---- an independent exact check of the near-contact truth, for the polytopal pairs ----------
+
+def exact_vertices(shape):
+    """The solid's vertices as exact rationals (cuboid corners as exact sums), or None."""
+    kind = shape_type(shape)
+    s = shape[kind]
+    if kind in ("convex", "triangle", "segment"):
+        return [tuple(F(x) for x in p) for p in s["points"]]
+    if kind == "cuboid":
+        c = [F(x) for x in s["center"]]
+        u = [[F(x) for x in v] for v in s["half_axes"]]
+        return [tuple(c[i] + a * u[0][i] + b * u[1][i] + d * u[2][i] for i in range(3))
+                for a in (-1, 1) for b in (-1, 1) for d in (-1, 1)]
+    return None
+
+
+def sub(p, q):
+    return tuple(a - b for a, b in zip(p, q))
+
+
+def dot(p, q):
+    return sum(a * b for a, b in zip(p, q))
+
+
+def cross(p, q):
+    return (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
+
+
+def exact_truth(a, b):
+    """Whether the solids meet, decided in rational arithmetic without the construction's
+    reasoning: for two polytopes, the separating axis test over every difference of two
+    vertices crossed with every other (a superset of the face normals and edge-edge axes, so
+    disjoint exactly when one of them separates strictly; when both lie in parallel planes,
+    also that normal crossed with every difference); for a half-space, the lowest
+    vertex (or a ball's lowest point) against its plane. None for other pairs."""
+    if shape_type(b) == "halfspace" and shape_type(a) != "halfspace":
+        a, b = b, a
+    if shape_type(a) == "halfspace":
+        s = a["halfspace"]
+        n, p = tuple(F(x) for x in s["normal"]), tuple(F(x) for x in s["point"])
+        if shape_type(b) == "ball":
+            c, r = tuple(F(x) for x in b["ball"]["center"]), F(b["ball"]["radius"])
+            h = dot(sub(c, p), n)  # meets iff h <= r |n|
+            return h <= 0 or h * h <= r * r * dot(n, n)
+        verts = exact_vertices(b)
+        if verts is None:
+            return None
+        return min(dot(sub(v, p), n) for v in verts) <= 0
+    va, vb = exact_vertices(a), exact_vertices(b)
+    if va is None or vb is None:
+        return None
+    diffs = {sub(p, q) for verts in (va, vb) for p in verts for q in verts if p != q}
+    diffs = list(diffs)
+    axes = [cross(d, e) for i, d in enumerate(diffs) for e in diffs[i + 1:]]
+    axes = [x for x in axes if x != (0, 0, 0)]
+    if all(cross(x, axes[0]) == (0, 0, 0) for x in axes):
+        # both in parallel planes (A - B is flat): its edges' in-plane normals as well
+        axes += [cross(axes[0], d) for d in diffs]
+    for axis in axes:
+        pa, pb = [dot(v, axis) for v in va], [dot(v, axis) for v in vb]
+        if max(pa) < min(pb) or max(pb) < min(pa):
+            return False
+    return True
+
+
+def check_near_contact(lines, sample, rng):
+    """Re-decide up to `sample` polytopal lines with `exact_truth`; returns (checked, wrong)."""
+    poly = {"cuboid", "convex", "triangle", "segment"}
+
+    def applies(x):
+        kinds = {shape_type(x["a"]), shape_type(x["b"])}
+        return kinds <= poly or ("halfspace" in kinds and len(kinds) == 2
+                                 and kinds - {"halfspace"} <= poly | {"ball"})
+    todo = [x for x in lines if applies(x)]
+    picked = [todo[i] for i in rng.permutation(len(todo))[:sample]]
+    wrong = [x for x in picked if exact_truth(x["a"], x["b"]) != x["expected"]]
+    return len(picked), wrong
+
+
+def scaled(line, exponent):
+    """The line with every coordinate, half axis and radius multiplied by 2^exponent: exact
+    (no f64 here comes near overflow or the subnormals for |exponent| <= 900), and scaling
+    preserves whether two solids meet, so `expected` is unchanged."""
+    factor = 2.0 ** exponent
+
+    def mul(v):
+        out = [float(x) * factor for x in v]
+        assert all(F(o) == F(x) * F(factor) for o, x in zip(out, v)), "inexact scaling"
+        return out
+
+    def shape(sh):
+        sh = map_points(sh, mul)
+        (kind,) = sh.keys()
+        if "radius" in sh[kind]:
+            sh[kind]["radius"] = mul([sh[kind]["radius"]])[0]
+        return sh
+
+    return {**line, "a": shape(line["a"]), "b": shape(line["b"]),
+            "family": "near_contact_scaled", "case": f"{line['case']}, scale 2^{exponent}"}
+
+
 def to_json(line):
     def clean(v):
         if isinstance(v, dict):
@@ -724,6 +839,12 @@ def main():
     ap.add_argument("--near-per-type", type=int, default=24,
                     help="near-contact configurations per pair type (7 lines each)")
     ap.add_argument("--seed", type=int, default=35)
+    ap.add_argument("--scaled", default="", metavar="E1,E2,...",
+                    help="also write OUT/near_contact_scaled/: the near-contact lines scaled by "
+                         "2^E for each E (e.g. -300,-40,40,300)")
+    ap.add_argument("--check", type=int, default=0, metavar="N",
+                    help="re-decide N near-contact lines per polytopal pair type with an "
+                         "independent exact test (slow) and fail on any disagreement")
     args = ap.parse_args()
     rng = np.random.default_rng(args.seed)
     summary = {}
@@ -741,8 +862,27 @@ def main():
             summary.setdefault(name, {})[family] = {
                 "pairs": len(lines), "intersecting": sum(1 for x in lines if x["expected"])}
         summary[name]["generic"]["undecided_redrawn"] = dropped
+        if args.scaled:
+            exps = [int(e) for e in args.scaled.split(",")]
+            os.makedirs(os.path.join(args.out, "near_contact_scaled"), exist_ok=True)
+            with open(os.path.join(args.out, "near_contact_scaled", name + ".jsonl"), "w") as f:
+                for e in exps:
+                    for line in near[name]:
+                        f.write(to_json(scaled(line, e)) + "\n")
+    failures = 0
+    if args.check:
+        check_rng = np.random.default_rng(args.seed + 1)
+        for name, lines in near.items():
+            checked, wrong = check_near_contact(lines, args.check, check_rng)
+            if checked:
+                summary[name]["near_contact"]["exact_check"] = {"checked": checked,
+                                                                "disagree": len(wrong)}
+            for x in wrong:
+                failures += 1
+                print(f"exact check disagrees: {to_json(x)}", file=sys.stderr)
     for name, s in summary.items():
         print(json.dumps({"pair": name, **s}))
+    return 1 if failures else 0
 
 
 if __name__ == "__main__":
