@@ -21,7 +21,6 @@ fcl_shapes.cpp reads (described there). Needs numpy and scipy.
 """
 import argparse
 import json
-import math
 import os
 import sys
 from fractions import Fraction
