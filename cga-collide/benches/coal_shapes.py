@@ -9,8 +9,9 @@ CollisionRequest is called in 5 loops of REPEAT / 5 calls (`result.clear()` befo
 since coal accumulates contacts); a pair's time per call is the best loop's time / its calls.
 Per pair type and family: the median over its pairs (micros_median), the Python call cost
 (micros_call_cost: the same loops on two unit spheres 10 apart, whose C++ work is a few dozen
-nanoseconds, so this is an upper bound of the cost of the call itself; measured every 25
-pairs through the run, median) and micros_net = micros_median - micros_call_cost. An answer is a collision when collide() reports a contact.
+nanoseconds, so this is an upper bound of the cost of the call itself; timed right before
+each pair, median) and micros_net, the median over the pairs of (pair time - the call cost
+timed next to it). An answer is a collision when collide() reports a contact.
 
 wrong = false_collisions + missed, against each line's `expected`; exact_input_pairs /
 wrong_exact_input count only the pairs whose coal input is exactly the JSON solid (no rounding
@@ -90,24 +91,19 @@ def time_loop(ga, ta, gb, tb, request, result, repeat, batches=5):
 
 
 class CallCost:
-    """The same loop on two unit spheres 10 apart, measured again every `every` pairs
-    through the run (so it sees the same machine load); reported as the median."""
+    """The same loops on two unit spheres 10 apart, timed right before each pair, so that
+    both see the same machine load (the machine may be shared)."""
 
-    def __init__(self, repeat, every=25):
-        self.repeat, self.every, self.samples, self.count = repeat, every, [], 0
+    def __init__(self, repeat):
+        self.repeat = repeat
         self.sphere = coal.Sphere(1.0)
         self.ta = coal.Transform3s(np.eye(3), np.zeros(3))
         self.tb = coal.Transform3s(np.eye(3), np.array([10.0, 0.0, 0.0]))
         self.req, self.res = coal.CollisionRequest(), coal.CollisionResult()
 
-    def tick(self):
-        if self.count % self.every == 0:
-            self.samples.append(time_loop(self.sphere, self.ta, self.sphere, self.tb,
-                                          self.req, self.res, self.repeat)[1])
-        self.count += 1
-
-    def value(self):
-        return float(np.median(self.samples))
+    def sample(self):
+        return time_loop(self.sphere, self.ta, self.sphere, self.tb, self.req, self.res,
+                         self.repeat)[1]
 
 
 def main():
@@ -121,21 +117,21 @@ def main():
     rows, wrong_lines = [], []
     cost = CallCost(args.repeat)
     for pair, family, expected, case, a, b in read_pairs(args.files):
-        cost.tick()
         pa, pb = convert(a), convert(b)
         exact = pa.exact and pb.exact
         try:
-            answer, micros = time_loop(geometry(pa), transform(pa), geometry(pb), transform(pb),
-                                       request, result, args.repeat)
+            ga, ta, gb, tb = geometry(pa), transform(pa), geometry(pb), transform(pb)
+            call = cost.sample()
+            answer, micros = time_loop(ga, ta, gb, tb, request, result, args.repeat)
         except Exception as e:  # coal's exceptions (unsupported pair, EPA failure, ...)
             print(f"coal raised on {pair} {case}: {e}", file=sys.stderr)
-            rows.append((pair, family, expected, None, None, exact))
+            rows.append((pair, family, expected, None, None, exact, None))
             continue
-        rows.append((pair, family, expected, answer, micros, exact))
+        rows.append((pair, family, expected, answer, micros, exact, call))
         if expected is not None and answer != expected:
             wrong_lines.append({"a": a, "b": b, "expected": expected, "coal": answer,
                                 "family": family, "case": case, "exact_input": exact})
-    for d in group_summary("coal", rows, cost.value()):
+    for d in group_summary("coal", rows):
         print(json.dumps(d))
     if args.wrong:
         with open(args.wrong, "w") as f:

@@ -195,30 +195,31 @@ def read_pairs(paths):
                     raise SystemExit(f"{path}:{number}: {e}")
 
 
-def group_summary(who, rows, call_cost):
-    """One output dict per (pair type, family) from rows of
-    (pair, family, expected, answer or None on error, micros, exact input)."""
+def group_summary(who, rows):
+    """One output dict per (pair type, family) from rows of (pair, family, expected, answer
+    or None on error, micros, exact input, call cost micros timed next to the pair)."""
     groups = {}
     for row in rows:
         groups.setdefault((row[0], row[1]), []).append(row)
+
+    def median(xs):
+        return round(float(np.median(xs)), 4) if xs else None
+
     out = []
     for (pair, family), rs in sorted(groups.items()):
-        times = [r[4] for r in rs if r[4] is not None]
-        med = float(np.median(times)) if times else None
+        timed = [r for r in rs if r[4] is not None]
         judged = [r for r in rs if r[2] is not None and r[3] is not None]
         false_col = sum(1 for r in judged if r[3] and not r[2])
         missed = sum(1 for r in judged if r[2] and not r[3])
-        wrong_exact = sum(1 for r in judged if r[5] and r[3] != r[2])
-        d = {"who": who, "pair": pair, "family": family, "pairs": len(rs),
-             "micros_median": round(med, 4) if med is not None else None,
-             "micros_call_cost": round(call_cost, 4) if call_cost is not None else None,
-             "micros_net": round(med - call_cost, 4) if med is not None and call_cost
-             is not None else med,
-             "wrong": false_col + missed, "false_collisions": false_col, "missed": missed,
-             "exact_input_pairs": sum(1 for r in rs if r[5]),
-             "wrong_exact_input": wrong_exact,
-             "errors": sum(1 for r in rs if r[3] is None)}
-        out.append(d)
+        out.append({
+            "who": who, "pair": pair, "family": family, "pairs": len(rs),
+            "micros_median": median([r[4] for r in timed]),
+            "micros_call_cost": median([r[6] for r in timed]),
+            "micros_net": median([r[4] - r[6] for r in timed]),
+            "wrong": false_col + missed, "false_collisions": false_col, "missed": missed,
+            "exact_input_pairs": sum(1 for r in rs if r[5]),
+            "wrong_exact_input": sum(1 for r in judged if r[5] and r[3] != r[2]),
+            "errors": sum(1 for r in rs if r[3] is None)})
     return out
 
 
