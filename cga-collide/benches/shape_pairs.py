@@ -179,10 +179,13 @@ def shift_z(shape, dz):
 # Truth, exactly: if dz > 0 the plane z = 1 + dz/2 separates them (lower <= 1 < upper), so they
 # are disjoint; if dz <= 0, the vertical line through q meets the lower solid in [lo, 1] and
 # the upper one in [1 + dz, hi + dz], and these overlap because at least one of the two
-# shapes has positive height at q (the only pair with zero height on both sides, two flat
-# horizontal triangles, is not built). So `expected` is min z(upper) <= max z(lower), which
-# `z_extent` computes in exact rational arithmetic from the f64 values and which the builder
-# checks against the intended value. Only plane-point and plane-plane facts are used: the
+# shapes has height at least |dz| at q: every shape built here except a flat horizontal
+# triangle has the vertical direction inside its tangent cone at q (face interiors, the
+# integer box edge and vertex, the tilted rims, hull vertices, vertical triangles' edges
+# and vertices all open upward from q, for a height of the shapes' size, ~2^-7 or more,
+# against |dz| <= 2^-50), and two flat triangles are never paired. So `expected` is
+# min z(upper) <= max z(lower), which `z_extent` computes in exact rational arithmetic from
+# the f64 values and which the builder checks against the intended value. Only plane-point and plane-plane facts are used: the
 # extents are maxima of linear functions over the solids, rational for every shape built
 # here (axis-aligned, integer-orthogonal or 3-4-5 tilted axes).
 #
@@ -273,7 +276,10 @@ def local_variants():
     def tilted_345(rng):
         """(rim point, disc centre, axis end) of a disc of radius 5 rho whose axis is
         (3, 0, 4) eta: its lowest point is the rim point c + 5 rho (4/5, 0, -3/5)."""
-        rho, eta = dyadic(rng, 0.0078125, 0.0625, 7), dyadic(rng, 0.0078125, 0.125, 7)
+        # eta >= 2 rho keeps a cone's slant steeper than vertical at the rim point
+        # (4 rho < 3 eta), so the vertical line through that point enters the solid.
+        rho = dyadic(rng, 0.0078125, 0.0625, 7)
+        eta = dyadic(rng, 2 * rho, 0.1875, 7)  # 3 rho + 4 eta < 1
         sx = 1.0 if rng.random() < 0.5 else -1.0
         centre = [-4 * rho * sx, 0.0, 3 * rho]
         end = [centre[0] + 3 * eta * sx, 0.0, centre[2] + 4 * eta]
