@@ -66,6 +66,8 @@ def geometry(peer):
         for a, b, c in peer.faces:
             tris.append(coal.Triangle(int(a), int(b), int(c)))
         return coal.Convex(vec3s(peer.points), tris)
+    if peer.kind == "unsupported":
+        raise ValueError("no convex hull could be made of these points")
     raise ValueError(f"coal has no {peer.kind}")
 
 

@@ -80,8 +80,11 @@ def hull(points):
     """Hull vertices and outward triangles (indices into the vertices); exact when no input
     point was dropped. None for a flat or degenerate set."""
     pts = np.unique(np.asarray(points, dtype=float), axis=0)
+    # qhull fails on huge or tiny magnitudes (its precision constants): run it on the points
+    # scaled by a power of two, which is exact and keeps the hull's combinatorics.
+    exponent = np.frexp(np.max(np.abs(pts)))[1] if np.any(pts) else 0
     try:
-        h = ConvexHull(pts)
+        h = ConvexHull(np.ldexp(pts, -int(exponent)))
     except Exception:  # qhull refuses flat sets
         return None
     keep = list(h.vertices)
