@@ -303,7 +303,7 @@ pub fn translated(s: &Shape, d: [f64; 3]) -> Option<Shape> {
             .all(|i| q(y[i]) == q(x[i]) + q(d[i]))
             .then_some(y)
     };
-    map_shape(s, &mv, &|x| Some(x), &|r| Some(r))
+    map_shape(s, &mv, &Some, &Some)
 }
 
 /// The largest magnitude among a shape's coordinates and vector components.

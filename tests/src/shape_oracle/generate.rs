@@ -458,9 +458,17 @@ pub fn touching_family(seed: u64, per_pair: usize, exp: i32, degenerate: bool) -
 /// The constructed curved contacts at scale `2^exp` (known answers, checked by the oracle where
 /// it has a method).
 pub fn curved_family(exp: i32, rotations: bool) -> Vec<Line> {
+    // Per contact: its own frame (3 pairs), then each rotation (3 pairs each); one rotation a
+    // contact, in turn, keeps the file small.
+    let per_contact = 3 * (1 + ROTATIONS.len());
     known_pairs(exp)
         .into_iter()
-        .filter(|k| rotations || k.note.contains("one ulp"))
+        .enumerate()
+        .filter(|(i, _)| {
+            let (contact, within) = (i / per_contact, i % per_contact);
+            within < 3 || (rotations && (within / 3 - 1) == contact % ROTATIONS.len())
+        })
+        .map(|(_, k)| k)
         .map(|k| Line {
             a: k.a,
             b: k.b,
@@ -470,53 +478,52 @@ pub fn curved_family(exp: i32, rotations: bool) -> Vec<Line> {
         .collect()
 }
 
-/// A tiny shape (`2^-332`) against a huge one (`2^332`), near contact: rounded translation,
-/// the oracle's answers.
+/// A tiny shape (scale `2^-332`) against a huge one (`2^332`), touching exactly at the
+/// origin (each translated so that its extreme point along an axis lands there), then moved
+/// one ulp of the tiny shape out and in; the oracle's answers.
 pub fn mixed_scale_family(seed: u64, per_pair: usize) -> Vec<Line> {
     let mut r = rng(seed);
     let mut out = Vec::new();
     for (ka, kb) in pairs_of(&POLYTOPAL) {
-        for _ in 0..per_pair {
-            let big = similar(
-                &{
-                    let c = point(&mut r);
-                    random_shape(&mut r, ka, &c, true)
-                },
-                &Similarity::identity(332),
-            )
-            .expect("exact scale");
+        let mut got = 0;
+        let mut tries = 0;
+        while got < per_pair && tries < 100 {
+            tries += 1;
+            let c = point(&mut r);
+            let big = similar(&random_shape(&mut r, ka, &c, true), &Similarity::identity(332))
+                .expect("exact scale");
             let small = similar(
                 &random_shape(&mut r, kb, &Point3::origin(), true),
                 &Similarity::identity(-332),
             )
             .expect("exact scale");
-            let e = match &big {
-                Shape::HalfSpace(h) => *h.normal(),
+            let e = match (&big, &small) {
+                (Shape::HalfSpace(h), _) => *h.normal(),
+                (_, Shape::HalfSpace(h)) => -*h.normal(),
                 _ => axis_vector(&mut r),
             };
-            let e = match &small {
-                Shape::HalfSpace(h) => -*h.normal(),
-                _ => e,
-            };
-            let (Some((pa, ra)), Some((pb, rb))) = (extreme(&big, &e, true), extreme(&small, &e, false)) else {
+            if let (Shape::HalfSpace(_), Shape::HalfSpace(_)) = (&big, &small) {
+                continue;
+            }
+            let unit = e / e.norm();
+            let (Some((pa, ra)), Some((pb, rb))) =
+                (extreme(&big, &e, true), extreme(&small, &e, false))
+            else {
                 continue;
             };
-            let unit = e / e.norm();
-            let t = (pa - pb) + unit * (ra + rb);
-            for k in [-2i32, 0, 2] {
-                let shift = t + unit * (k as f64) * ulp(t.amax().max(1e-300));
-                let moved = construct::map_shape(
-                    &small,
-                    &|x| Some([x[0] + shift.x, x[1] + shift.y, x[2] + shift.z]),
-                    &|x| Some(x),
-                    &|x| Some(x),
-                );
-                if let Some(m) = moved {
-                    let (a, b) = maybe_swap(&mut r, big.clone(), m);
-                    if let Some(l) = oracle_line(a, b, format!("{ka} 2^332 against {kb} 2^-332; rounded contact; {k} ulps")) {
-                        out.push(l);
-                    }
-                }
+            let ta = -(pa.coords + unit * ra);
+            let tb = -(pb.coords - unit * rb);
+            let (Some(big), Some(small)) = (
+                translated(&big, [ta.x, ta.y, ta.z]),
+                translated(&small, [tb.x, tb.y, tb.z]),
+            ) else {
+                continue;
+            };
+            let step = ulp(magnitude(&small));
+            let tag = format!("{ka} at 2^332 touching {kb} at 2^-332 at the origin; one ulp of the small one");
+            if let Some(lines) = moves(&big, &small, &e, &Similarity::identity(0), step, &tag) {
+                out.extend(lines);
+                got += 1;
             }
         }
     }

@@ -8,6 +8,9 @@
 //! point (`z·p >= z·x` for `p ∈ P`, `z·q <= z·y` for `q ∈ Q`, with `z = x − y`). Every candidate
 //! is checked in exact rationals; `f64` only orders the candidates so the right one comes first.
 
+// Small fixed-size linear algebra reads clearest with explicit indices.
+#![allow(clippy::needless_range_loop)]
+
 use num_traits::{Signed, Zero};
 
 use super::exact::{dot, sub, P3, Q};
