@@ -16,6 +16,12 @@ fn main() {
         let path = std::path::Path::new(&dir).join(name);
         std::fs::write(&path, fixture_text(family, &lines)).expect("write a fixture");
         let yes = lines.iter().filter(|l| l.expected).count();
-        println!("{}: {} pairs ({} meeting, {} apart)", path.display(), lines.len(), yes, lines.len() - yes);
+        println!(
+            "{}: {} pairs ({} meeting, {} apart)",
+            path.display(),
+            lines.len(),
+            yes,
+            lines.len() - yes
+        );
     }
 }

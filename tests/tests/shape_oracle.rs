@@ -72,7 +72,12 @@ fn compare(select: impl Fn(&Case) -> bool, check: impl Fn(&Case) -> Result<(), S
         failures.is_empty(),
         "{} of {n} cases disagree:\n{}",
         failures.len(),
-        failures.iter().take(25).cloned().collect::<Vec<_>>().join("\n")
+        failures
+            .iter()
+            .take(25)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join("\n")
     );
 }
 
@@ -107,7 +112,10 @@ fn check_distances(c: &Case) -> Result<(), String> {
             }
             let got = within_distance(&c.a, &c.b, cl).map_err(|e| e.to_string())?;
             if got != o.within(cl) {
-                return Err(format!("within_distance(.., {cl:?}) = {got}, exact {}", o.within(cl)));
+                return Err(format!(
+                    "within_distance(.., {cl:?}) = {got}, exact {}",
+                    o.within(cl)
+                ));
             }
         }
     }
@@ -143,7 +151,9 @@ fn check_placed(c: &Case, seed: u64) -> Result<(), String> {
     let at = intersects_at(&c.a, &pa, &c.b, &pb).map_err(|e| format!("intersects_at: {e}"))?;
     let placed = intersects(&a, &b).map_err(|e| format!("intersects placed: {e}"))?;
     if at != placed {
-        return Err(format!("intersects_at {at} but intersects of the placed shapes {placed}"));
+        return Err(format!(
+            "intersects_at {at} but intersects of the placed shapes {placed}"
+        ));
     }
     if let Some(exact) = generate::decided(&a, &b) {
         if exact != placed {
@@ -183,7 +193,10 @@ fn fixture_lines_read_back_to_the_same_floats() {
 #[test]
 fn fixtures_cover_every_pair_type_in_every_hard_family() {
     let all = cases();
-    for (ka, kb) in KINDS.iter().flat_map(|a| KINDS.iter().map(move |b| (*a, *b))) {
+    for (ka, kb) in KINDS
+        .iter()
+        .flat_map(|a| KINDS.iter().map(move |b| (*a, *b)))
+    {
         if ka > kb {
             continue;
         }
@@ -200,7 +213,11 @@ fn fixtures_cover_every_pair_type_in_every_hard_family() {
         assert!(count("random", None) > 0, "no random {ka}-{kb}");
         assert!(count("degenerate", None) > 0, "no degenerate {ka}-{kb}");
         let round = ka == "cylinder" || ka == "cone" || kb == "cylinder" || kb == "cone";
-        let touching = if round { "curved_contacts" } else { "polytopal_touching" };
+        let touching = if round {
+            "curved_contacts"
+        } else {
+            "polytopal_touching"
+        };
         // Both answers near contact, for every pair type with a round shape that has a base
         // contact (every pair but cylinder-cylinder and cone-cone come in either order).
         assert!(count(touching, Some(true)) > 0, "no touching {ka}-{kb}");

@@ -85,40 +85,211 @@ fn cylinder_contacts() -> Vec<Contact> {
     let top = [0.0, 0.0, 1.0];
     let rim = [3.0, 0.0, 4.0];
     vec![
-        c(y(), half(p(2., 0., 0.), v(-1., 0., 0.)), side, "cylinder lying on a half-space (side line)"),
-        c(y(), boxed(p(3., 0., 4.), 1.0), side, "cylinder lying on a box face (segment)"),
-        c(y(), cuboid(p(4., 0., 4.), [v(1., 1., 0.), v(1., -1., 0.), v(0., 0., 1.)]), side, "box edge along the cylinder's side"),
-        c(y(), tri(p(2., -1., 3.), p(2., 1., 3.), p(2., 0., 6.)), side, "triangle tangent along the side"),
-        c(y(), seg(p(2., -1., 4.), p(2., 1., 4.)), side, "segment crossing the side line, tangent at a point"),
-        c(y(), seg(p(2., 0., 2.), p(2., 0., 6.)), side, "segment lying on the side line"),
-        c(y(), hull(&[p(2., -1., 3.), p(2., 1., 3.), p(2., 0., 6.), p(4., 0., 4.)]), side, "hull face tangent along the side"),
+        c(
+            y(),
+            half(p(2., 0., 0.), v(-1., 0., 0.)),
+            side,
+            "cylinder lying on a half-space (side line)",
+        ),
+        c(
+            y(),
+            boxed(p(3., 0., 4.), 1.0),
+            side,
+            "cylinder lying on a box face (segment)",
+        ),
+        c(
+            y(),
+            cuboid(
+                p(4., 0., 4.),
+                [v(1., 1., 0.), v(1., -1., 0.), v(0., 0., 1.)],
+            ),
+            side,
+            "box edge along the cylinder's side",
+        ),
+        c(
+            y(),
+            tri(p(2., -1., 3.), p(2., 1., 3.), p(2., 0., 6.)),
+            side,
+            "triangle tangent along the side",
+        ),
+        c(
+            y(),
+            seg(p(2., -1., 4.), p(2., 1., 4.)),
+            side,
+            "segment crossing the side line, tangent at a point",
+        ),
+        c(
+            y(),
+            seg(p(2., 0., 2.), p(2., 0., 6.)),
+            side,
+            "segment lying on the side line",
+        ),
+        c(
+            y(),
+            hull(&[p(2., -1., 3.), p(2., 1., 3.), p(2., 0., 6.), p(4., 0., 4.)]),
+            side,
+            "hull face tangent along the side",
+        ),
         c(y(), ball(p(5., 0., 4.), 3.0), side, "ball on the side"),
-        c(y(), capsule(p(3., 0., 2.), p(3., 0., 6.), 1.0), side, "capsule parallel to the side"),
-        c(y(), capsule(p(3., -4., 4.), p(3., 4., 4.), 1.0), side, "capsule crossing the side"),
-        c(y(), cylinder(p(5., 0., 2.), p(5., 0., 6.), 3.0), side, "parallel cylinders r1 + r2 apart"),
-        c(y(), cylinder(p(5., -4., 4.), p(5., 4., 4.), 3.0), side, "crossed cylinders touching"),
-        c(y(), cone(p(2., 0., 1.), p(5., 0., 5.), 3.75), side, "cone lying along the cylinder's side"),
-        c(y(), half(p(0., 0., 8.), v(0., 0., -1.)), top, "half-space on the cap (face)"),
-        c(y(), boxed(p(0., 0., 9.), 1.0), top, "box standing on the cap"),
-        c(y(), cuboid(p(0., 0., 9.), [v(3., 0., 0.), v(0., 3., 0.), v(0., 0., 1.)]), top, "box face covering the cap"),
-        c(y(), cone(p(0., 0., 11.), p(0., 0., 8.), 1.0), top, "cone standing on its base on the cap"),
-        c(y(), cone(p(0., 0., 8.), p(0., 0., 11.), 1.0), top, "cone on its apex on the cap"),
-        c(y(), cylinder(p(0., 0., 8.), p(0., 0., 10.), 1.0), top, "cylinders stacked coaxially"),
-        c(y(), cylinder(p(-3., 0., 9.), p(3., 0., 9.), 1.0), top, "cylinder lying across the cap"),
+        c(
+            y(),
+            capsule(p(3., 0., 2.), p(3., 0., 6.), 1.0),
+            side,
+            "capsule parallel to the side",
+        ),
+        c(
+            y(),
+            capsule(p(3., -4., 4.), p(3., 4., 4.), 1.0),
+            side,
+            "capsule crossing the side",
+        ),
+        c(
+            y(),
+            cylinder(p(5., 0., 2.), p(5., 0., 6.), 3.0),
+            side,
+            "parallel cylinders r1 + r2 apart",
+        ),
+        c(
+            y(),
+            cylinder(p(5., -4., 4.), p(5., 4., 4.), 3.0),
+            side,
+            "crossed cylinders touching",
+        ),
+        c(
+            y(),
+            cone(p(2., 0., 1.), p(5., 0., 5.), 3.75),
+            side,
+            "cone lying along the cylinder's side",
+        ),
+        c(
+            y(),
+            half(p(0., 0., 8.), v(0., 0., -1.)),
+            top,
+            "half-space on the cap (face)",
+        ),
+        c(
+            y(),
+            boxed(p(0., 0., 9.), 1.0),
+            top,
+            "box standing on the cap",
+        ),
+        c(
+            y(),
+            cuboid(p(0., 0., 9.), [v(3., 0., 0.), v(0., 3., 0.), v(0., 0., 1.)]),
+            top,
+            "box face covering the cap",
+        ),
+        c(
+            y(),
+            cone(p(0., 0., 11.), p(0., 0., 8.), 1.0),
+            top,
+            "cone standing on its base on the cap",
+        ),
+        c(
+            y(),
+            cone(p(0., 0., 8.), p(0., 0., 11.), 1.0),
+            top,
+            "cone on its apex on the cap",
+        ),
+        c(
+            y(),
+            cylinder(p(0., 0., 8.), p(0., 0., 10.), 1.0),
+            top,
+            "cylinders stacked coaxially",
+        ),
+        c(
+            y(),
+            cylinder(p(-3., 0., 9.), p(3., 0., 9.), 1.0),
+            top,
+            "cylinder lying across the cap",
+        ),
         c(y(), ball(p(0., 0., 11.), 3.0), top, "ball on the cap"),
-        c(y(), tri(p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.)), top, "triangle flat on the cap"),
-        c(y(), seg(p(-1., 0., 8.), p(1., 0., 8.)), top, "segment on the cap"),
-        c(y(), hull(&[p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.), p(0., 0., 9.)]), top, "tetrahedron standing on the cap"),
-        c(y(), capsule(p(-1., 0., 9.), p(1., 0., 9.), 1.0), top, "capsule lying on the cap"),
+        c(
+            y(),
+            tri(p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.)),
+            top,
+            "triangle flat on the cap",
+        ),
+        c(
+            y(),
+            seg(p(-1., 0., 8.), p(1., 0., 8.)),
+            top,
+            "segment on the cap",
+        ),
+        c(
+            y(),
+            hull(&[
+                p(-1., -1., 8.),
+                p(1., -1., 8.),
+                p(0., 1., 8.),
+                p(0., 0., 9.),
+            ]),
+            top,
+            "tetrahedron standing on the cap",
+        ),
+        c(
+            y(),
+            capsule(p(-1., 0., 9.), p(1., 0., 9.), 1.0),
+            top,
+            "capsule lying on the cap",
+        ),
         c(y(), ball(p(5., 0., 12.), 5.0), rim, "ball on the rim"),
-        c(y(), half(p(2., 0., 8.), v(-3., 0., -4.)), rim, "tilted half-space touching the rim"),
-        c(y(), cuboid(p(3.5, 0., 10.), [v(1.5, 0., 2.), v(0., 1., 0.), v(-2., 0., 1.5)]), rim, "tilted box face touching the rim"),
-        c(y(), seg(p(2., -1., 8.), p(2., 1., 8.)), rim, "segment tangent to the rim"),
-        c(y(), capsule(p(5., -2., 12.), p(5., 2., 12.), 5.0), rim, "capsule on the rim"),
-        c(y(), cone(p(2., 0., 8.), p(5., 0., 12.), 1.0), rim, "cone apex on the rim"),
-        c(y(), cylinder(p(5., -2., 12.), p(5., 2., 12.), 5.0), rim, "cylinder on the rim"),
-        c(y(), tri(p(2., -1., 8.), p(2., 1., 8.), p(0., 0., 9.5)), rim, "triangle in the rim's tangent plane"),
-        c(y(), hull(&[p(2., -1., 8.), p(2., 1., 8.), p(0., 0., 9.5), p(5., 0., 12.)]), rim, "hull vertex on the rim"),
+        c(
+            y(),
+            half(p(2., 0., 8.), v(-3., 0., -4.)),
+            rim,
+            "tilted half-space touching the rim",
+        ),
+        c(
+            y(),
+            cuboid(
+                p(3.5, 0., 10.),
+                [v(1.5, 0., 2.), v(0., 1., 0.), v(-2., 0., 1.5)],
+            ),
+            rim,
+            "tilted box face touching the rim",
+        ),
+        c(
+            y(),
+            seg(p(2., -1., 8.), p(2., 1., 8.)),
+            rim,
+            "segment tangent to the rim",
+        ),
+        c(
+            y(),
+            capsule(p(5., -2., 12.), p(5., 2., 12.), 5.0),
+            rim,
+            "capsule on the rim",
+        ),
+        c(
+            y(),
+            cone(p(2., 0., 8.), p(5., 0., 12.), 1.0),
+            rim,
+            "cone apex on the rim",
+        ),
+        c(
+            y(),
+            cylinder(p(5., -2., 12.), p(5., 2., 12.), 5.0),
+            rim,
+            "cylinder on the rim",
+        ),
+        c(
+            y(),
+            tri(p(2., -1., 8.), p(2., 1., 8.), p(0., 0., 9.5)),
+            rim,
+            "triangle in the rim's tangent plane",
+        ),
+        c(
+            y(),
+            hull(&[
+                p(2., -1., 8.),
+                p(2., 1., 8.),
+                p(0., 0., 9.5),
+                p(5., 0., 12.),
+            ]),
+            rim,
+            "hull vertex on the rim",
+        ),
     ]
 }
 
@@ -133,41 +304,217 @@ fn cone_contacts() -> Vec<Contact> {
     let slant = [4.0, 0.0, 3.0];
     vec![
         c(k(), ball(p(0., 0., 11.), 3.0), up, "ball on the apex"),
-        c(k(), half(p(0., 0., 8.), v(0., 0., -1.)), up, "half-space on the apex"),
+        c(
+            k(),
+            half(p(0., 0., 8.), v(0., 0., -1.)),
+            up,
+            "half-space on the apex",
+        ),
         c(k(), boxed(p(0., 0., 9.), 1.0), up, "box on the apex"),
-        c(k(), seg(p(-1., 0., 8.), p(1., 0., 8.)), up, "segment through the apex"),
-        c(k(), tri(p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.)), up, "triangle on the apex"),
-        c(k(), hull(&[p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.), p(0., 0., 9.)]), up, "hull face on the apex"),
-        c(k(), capsule(p(-1., 0., 9.), p(1., 0., 9.), 1.0), up, "capsule on the apex"),
-        c(k(), cylinder(p(-2., 0., 9.), p(2., 0., 9.), 1.0), up, "cylinder lying on the apex"),
-        c(k(), cone(p(0., 0., 8.), p(0., 0., 12.), 2.0), up, "cones apex to apex"),
-        c(k(), half(p(0., 0., 0.), v(0., 0., 1.)), down, "cone on its base on a half-space"),
-        c(k(), cuboid(p(0., 0., -1.), [v(2., 0., 0.), v(0., 2., 0.), v(0., 0., 1.)]), down, "cone on its base on a box"),
-        c(k(), cylinder(p(0., 0., -2.), p(0., 0., 0.), 3.0), down, "cone on a cylinder's cap"),
-        c(k(), cone(p(0., 0., -5.), p(0., 0., 0.), 6.0), down, "cones base to base (same disc)"),
+        c(
+            k(),
+            seg(p(-1., 0., 8.), p(1., 0., 8.)),
+            up,
+            "segment through the apex",
+        ),
+        c(
+            k(),
+            tri(p(-1., -1., 8.), p(1., -1., 8.), p(0., 1., 8.)),
+            up,
+            "triangle on the apex",
+        ),
+        c(
+            k(),
+            hull(&[
+                p(-1., -1., 8.),
+                p(1., -1., 8.),
+                p(0., 1., 8.),
+                p(0., 0., 9.),
+            ]),
+            up,
+            "hull face on the apex",
+        ),
+        c(
+            k(),
+            capsule(p(-1., 0., 9.), p(1., 0., 9.), 1.0),
+            up,
+            "capsule on the apex",
+        ),
+        c(
+            k(),
+            cylinder(p(-2., 0., 9.), p(2., 0., 9.), 1.0),
+            up,
+            "cylinder lying on the apex",
+        ),
+        c(
+            k(),
+            cone(p(0., 0., 8.), p(0., 0., 12.), 2.0),
+            up,
+            "cones apex to apex",
+        ),
+        c(
+            k(),
+            half(p(0., 0., 0.), v(0., 0., 1.)),
+            down,
+            "cone on its base on a half-space",
+        ),
+        c(
+            k(),
+            cuboid(
+                p(0., 0., -1.),
+                [v(2., 0., 0.), v(0., 2., 0.), v(0., 0., 1.)],
+            ),
+            down,
+            "cone on its base on a box",
+        ),
+        c(
+            k(),
+            cylinder(p(0., 0., -2.), p(0., 0., 0.), 3.0),
+            down,
+            "cone on a cylinder's cap",
+        ),
+        c(
+            k(),
+            cone(p(0., 0., -5.), p(0., 0., 0.), 6.0),
+            down,
+            "cones base to base (same disc)",
+        ),
         c(k(), ball(p(0., 0., -3.), 3.0), down, "ball under the base"),
-        c(k(), tri(p(-1., -1., 0.), p(1., -1., 0.), p(0., 1., 0.)), down, "triangle in the base"),
-        c(k(), seg(p(-1., 0., 0.), p(1., 0., 0.)), down, "segment in the base"),
-        c(k(), hull(&[p(-1., -1., 0.), p(1., -1., 0.), p(0., 1., 0.), p(0., 0., -1.)]), down, "hull face on the base"),
-        c(k(), capsule(p(-1., 0., -1.), p(1., 0., -1.), 1.0), down, "capsule under the base"),
+        c(
+            k(),
+            tri(p(-1., -1., 0.), p(1., -1., 0.), p(0., 1., 0.)),
+            down,
+            "triangle in the base",
+        ),
+        c(
+            k(),
+            seg(p(-1., 0., 0.), p(1., 0., 0.)),
+            down,
+            "segment in the base",
+        ),
+        c(
+            k(),
+            hull(&[
+                p(-1., -1., 0.),
+                p(1., -1., 0.),
+                p(0., 1., 0.),
+                p(0., 0., -1.),
+            ]),
+            down,
+            "hull face on the base",
+        ),
+        c(
+            k(),
+            capsule(p(-1., 0., -1.), p(1., 0., -1.), 1.0),
+            down,
+            "capsule under the base",
+        ),
         c(k(), ball(p(8., 0., 0.), 2.0), out, "ball on the rim"),
-        c(k(), half(p(6., 0., 0.), v(-1., 0., 0.)), out, "half-space touching the rim"),
-        c(k(), boxed(p(7., 0., 0.), 1.0), out, "box face touching the rim"),
-        c(k(), seg(p(6., -1., 0.), p(6., 1., 0.)), out, "segment tangent to the rim"),
-        c(k(), capsule(p(7., -1., 0.), p(7., 1., 0.), 1.0), out, "capsule on the rim"),
-        c(k(), cylinder(p(8., 0., -1.), p(8., 0., 1.), 2.0), out, "cylinder side on the rim"),
-        c(k(), tri(p(6., -1., -1.), p(6., 1., -1.), p(6., 0., 1.)), out, "triangle through the rim point"),
-        c(k(), hull(&[p(6., -1., -1.), p(6., 1., -1.), p(6., 0., 1.), p(8., 0., 0.)]), out, "hull face on the rim"),
-        c(k(), cone(p(6., 0., 0.), p(9., 0., 0.), 1.0), out, "cone apex on the rim"),
+        c(
+            k(),
+            half(p(6., 0., 0.), v(-1., 0., 0.)),
+            out,
+            "half-space touching the rim",
+        ),
+        c(
+            k(),
+            boxed(p(7., 0., 0.), 1.0),
+            out,
+            "box face touching the rim",
+        ),
+        c(
+            k(),
+            seg(p(6., -1., 0.), p(6., 1., 0.)),
+            out,
+            "segment tangent to the rim",
+        ),
+        c(
+            k(),
+            capsule(p(7., -1., 0.), p(7., 1., 0.), 1.0),
+            out,
+            "capsule on the rim",
+        ),
+        c(
+            k(),
+            cylinder(p(8., 0., -1.), p(8., 0., 1.), 2.0),
+            out,
+            "cylinder side on the rim",
+        ),
+        c(
+            k(),
+            tri(p(6., -1., -1.), p(6., 1., -1.), p(6., 0., 1.)),
+            out,
+            "triangle through the rim point",
+        ),
+        c(
+            k(),
+            hull(&[
+                p(6., -1., -1.),
+                p(6., 1., -1.),
+                p(6., 0., 1.),
+                p(8., 0., 0.),
+            ]),
+            out,
+            "hull face on the rim",
+        ),
+        c(
+            k(),
+            cone(p(6., 0., 0.), p(9., 0., 0.), 1.0),
+            out,
+            "cone apex on the rim",
+        ),
         c(k(), ball(p(7., 0., 7.), 5.0), slant, "ball on the slant"),
-        c(k(), half(p(3., 0., 4.), v(-4., 0., -3.)), slant, "half-space along a generator"),
-        c(k(), cuboid(p(5., 0., 5.5), [v(2., 0., 1.5), v(0., 1., 0.), v(-0.75, 0., 1.)]), slant, "box face along a generator"),
-        c(k(), cylinder(p(7.75, 0., 6.), p(6.25, 0., 8.), 5.0), slant, "cylinder along a generator"),
-        c(k(), capsule(p(7.75, 0., 6.), p(6.25, 0., 8.), 5.0), slant, "capsule along a generator"),
-        c(k(), seg(p(3.75, 0., 3.), p(2.25, 0., 5.)), slant, "segment lying on a generator"),
-        c(k(), seg(p(3., -1., 4.), p(3., 1., 4.)), slant, "segment tangent to the slant"),
-        c(k(), tri(p(3., -1., 4.), p(3., 1., 4.), p(1.5, 0., 6.)), slant, "triangle in the slant's tangent plane"),
-        c(k(), hull(&[p(3., -1., 4.), p(3., 1., 4.), p(1.5, 0., 6.), p(7., 0., 7.)]), slant, "hull face on the slant"),
+        c(
+            k(),
+            half(p(3., 0., 4.), v(-4., 0., -3.)),
+            slant,
+            "half-space along a generator",
+        ),
+        c(
+            k(),
+            cuboid(
+                p(5., 0., 5.5),
+                [v(2., 0., 1.5), v(0., 1., 0.), v(-0.75, 0., 1.)],
+            ),
+            slant,
+            "box face along a generator",
+        ),
+        c(
+            k(),
+            cylinder(p(7.75, 0., 6.), p(6.25, 0., 8.), 5.0),
+            slant,
+            "cylinder along a generator",
+        ),
+        c(
+            k(),
+            capsule(p(7.75, 0., 6.), p(6.25, 0., 8.), 5.0),
+            slant,
+            "capsule along a generator",
+        ),
+        c(
+            k(),
+            seg(p(3.75, 0., 3.), p(2.25, 0., 5.)),
+            slant,
+            "segment lying on a generator",
+        ),
+        c(
+            k(),
+            seg(p(3., -1., 4.), p(3., 1., 4.)),
+            slant,
+            "segment tangent to the slant",
+        ),
+        c(
+            k(),
+            tri(p(3., -1., 4.), p(3., 1., 4.), p(1.5, 0., 6.)),
+            slant,
+            "triangle in the slant's tangent plane",
+        ),
+        c(
+            k(),
+            hull(&[p(3., -1., 4.), p(3., 1., 4.), p(1.5, 0., 6.), p(7., 0., 7.)]),
+            slant,
+            "hull face on the slant",
+        ),
         c(
             cone(p(0., 0., 200.), p(0., 0., 0.), 150.0),
             cone(p(0., 0., 200.), p(192., 0., 144.), 150.0),
@@ -197,9 +544,21 @@ impl Similarity {
     /// From an integer quaternion `(a, b, c, d)`.
     pub fn from_quaternion(a: i64, b: i64, c: i64, d: i64, exp: i32) -> Self {
         let m = [
-            [a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c)],
-            [2 * (b * c + a * d), a * a - b * b + c * c - d * d, 2 * (c * d - a * b)],
-            [2 * (b * d - a * c), 2 * (c * d + a * b), a * a - b * b - c * c + d * d],
+            [
+                a * a + b * b - c * c - d * d,
+                2 * (b * c - a * d),
+                2 * (b * d + a * c),
+            ],
+            [
+                2 * (b * c + a * d),
+                a * a - b * b + c * c - d * d,
+                2 * (c * d - a * b),
+            ],
+            [
+                2 * (b * d - a * c),
+                2 * (c * d + a * b),
+                a * a - b * b - c * c + d * d,
+            ],
         ];
         Similarity {
             m,
@@ -299,9 +658,7 @@ pub fn similar(s: &Shape, t: &Similarity) -> Option<Shape> {
 pub fn translated(s: &Shape, d: [f64; 3]) -> Option<Shape> {
     let mv = |x: [f64; 3]| {
         let y = [x[0] + d[0], x[1] + d[1], x[2] + d[2]];
-        (0..3)
-            .all(|i| q(y[i]) == q(x[i]) + q(d[i]))
-            .then_some(y)
+        (0..3).all(|i| q(y[i]) == q(x[i]) + q(d[i])).then_some(y)
     };
     map_shape(s, &mv, &Some, &Some)
 }
@@ -354,7 +711,8 @@ pub fn variants(contact: &Contact, t: &Similarity, step: f64, tag: &str) -> Opti
 }
 
 /// The rotations the constructed pairs use (integer quaternions).
-pub const ROTATIONS: [(i64, i64, i64, i64); 4] = [(1, 1, 0, 0), (2, 1, 0, 0), (1, 1, 1, 0), (3, 1, 2, 1)];
+pub const ROTATIONS: [(i64, i64, i64, i64); 4] =
+    [(1, 1, 0, 0), (2, 1, 0, 0), (1, 1, 1, 0), (3, 1, 2, 1)];
 
 /// Every constructed pair at a power-of-two scale `exp`: in the contact's own frame moved by
 /// one ulp of the pair's largest coordinate (times the normal's integer components), and under

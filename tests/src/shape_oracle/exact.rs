@@ -112,7 +112,11 @@ pub fn sign_two_roots(k: &Q, alpha: &Q, a: &Q, beta: &Q, b: &Q) -> Ordering {
     }
     // (k + α√a)² − β²b = (k² + α²a − β²b) + 2kα·√a
     let two = int(2);
-    let t = sign_root(&(k * k + alpha * alpha * a - beta * beta * b), &(two * k * alpha), a);
+    let t = sign_root(
+        &(k * k + alpha * alpha * a - beta * beta * b),
+        &(two * k * alpha),
+        a,
+    );
     if su == Ordering::Greater {
         t
     } else {

@@ -22,20 +22,34 @@ use rand::{RngExt, SeedableRng};
 use rand_xorshift::XorShiftRng;
 
 use super::construct::{
-    self, ball, capsule, cone, cuboid, cylinder, half, hull, known_pairs, magnitude, seg,
-    similar, translated, tri, ulp, Similarity, ROTATIONS,
+    self, ball, capsule, cone, cuboid, cylinder, half, hull, known_pairs, magnitude, seg, similar,
+    translated, tri, ulp, Similarity, ROTATIONS,
 };
 use super::exact::{add, cross, dot, q, scale, sub, P3, Q};
 use super::{body, json, Body};
 
 /// Every kind, as the command line spells it.
 pub const KINDS: [&str; 9] = [
-    "ball", "cuboid", "capsule", "cylinder", "cone", "halfspace", "convex", "triangle", "segment",
+    "ball",
+    "cuboid",
+    "capsule",
+    "cylinder",
+    "cone",
+    "halfspace",
+    "convex",
+    "triangle",
+    "segment",
 ];
 
 /// The kinds the oracle decides exactly against each other (no cylinder, no cone).
 pub const POLYTOPAL: [&str; 7] = [
-    "ball", "cuboid", "capsule", "halfspace", "convex", "triangle", "segment",
+    "ball",
+    "cuboid",
+    "capsule",
+    "halfspace",
+    "convex",
+    "triangle",
+    "segment",
 ];
 
 type Rng = XorShiftRng;
@@ -202,11 +216,7 @@ fn fit(p: &P3, target: &Q, inner: bool) -> Q {
         if (inner && &v <= target) || (!inner && &v >= target) {
             return s;
         }
-        s = if inner {
-            s * q(0.5)
-        } else {
-            s * q(2.0)
-        };
+        s = if inner { s * q(0.5) } else { s * q(2.0) };
     }
 }
 
@@ -217,8 +227,14 @@ fn prism_corners(centre: &P3, u_half: Option<&P3>, p1: &P3, p2: &P3, s1: &Q, s2:
             break;
         }
         let mut x = centre.clone();
-        x = add(&x, &scale(p1, &if m & 1 == 1 { s1.clone() } else { -s1.clone() }));
-        x = add(&x, &scale(p2, &if m & 2 == 2 { s2.clone() } else { -s2.clone() }));
+        x = add(
+            &x,
+            &scale(p1, &if m & 1 == 1 { s1.clone() } else { -s1.clone() }),
+        );
+        x = add(
+            &x,
+            &scale(p2, &if m & 2 == 2 { s2.clone() } else { -s2.clone() }),
+        );
         if let Some(u) = u_half {
             x = if m & 4 == 4 { add(&x, u) } else { sub(&x, u) };
         }
@@ -291,7 +307,12 @@ pub struct Line {
 
 fn oracle_line(a: Shape, b: Shape, note: String) -> Option<Line> {
     let expected = decided(&a, &b)?;
-    Some(Line { a, b, expected, note })
+    Some(Line {
+        a,
+        b,
+        expected,
+        note,
+    })
 }
 
 fn pairs_of(kinds: &[&'static str]) -> Vec<(&'static str, &'static str)> {
@@ -371,7 +392,12 @@ fn extreme(s: &Shape, e: &Vector3<f64>, max: bool) -> Option<(Point3<f64>, f64)>
 
 /// `a` and `b` (polytopal kinds) in contact along an axis: `b` translated so that its lowest
 /// point along `e` meets `a`'s highest. Half-spaces take `e` from their normal.
-fn touching(r: &mut Rng, ka: &str, kb: &str, degenerate: bool) -> Option<(Shape, Shape, Vector3<f64>)> {
+fn touching(
+    r: &mut Rng,
+    ka: &str,
+    kb: &str,
+    degenerate: bool,
+) -> Option<(Shape, Shape, Vector3<f64>)> {
     let c = point(r);
     let make = |r: &mut Rng, k: &str| {
         if degenerate && r.random_bool(0.7) {
@@ -442,8 +468,22 @@ pub fn touching_family(seed: u64, per_pair: usize, exp: i32, degenerate: bool) -
             let id = Similarity::identity(exp);
             let rot = Similarity::from_quaternion(qa, qb, qc, qd, exp);
             let (Some(x), Some(y)) = (
-                moves(&a, &b, &e, &id, 0.0, &format!("{ka}-{kb} in contact along an axis; scale 2^{exp}; one ulp")),
-                moves(&a, &b, &e, &rot, 2f64.powi(exp - 32), &format!("{ka}-{kb} in contact, rotated; scale 2^{exp}; step 2^-32")),
+                moves(
+                    &a,
+                    &b,
+                    &e,
+                    &id,
+                    0.0,
+                    &format!("{ka}-{kb} in contact along an axis; scale 2^{exp}; one ulp"),
+                ),
+                moves(
+                    &a,
+                    &b,
+                    &e,
+                    &rot,
+                    2f64.powi(exp - 32),
+                    &format!("{ka}-{kb} in contact, rotated; scale 2^{exp}; step 2^-32"),
+                ),
             ) else {
                 continue;
             };
@@ -490,8 +530,11 @@ pub fn mixed_scale_family(seed: u64, per_pair: usize) -> Vec<Line> {
         while got < per_pair && tries < 100 {
             tries += 1;
             let c = point(&mut r);
-            let big = similar(&random_shape(&mut r, ka, &c, true), &Similarity::identity(332))
-                .expect("exact scale");
+            let big = similar(
+                &random_shape(&mut r, ka, &c, true),
+                &Similarity::identity(332),
+            )
+            .expect("exact scale");
             let small = similar(
                 &random_shape(&mut r, kb, &Point3::origin(), true),
                 &Similarity::identity(-332),
@@ -520,7 +563,9 @@ pub fn mixed_scale_family(seed: u64, per_pair: usize) -> Vec<Line> {
                 continue;
             };
             let step = ulp(magnitude(&small));
-            let tag = format!("{ka} at 2^332 touching {kb} at 2^-332 at the origin; one ulp of the small one");
+            let tag = format!(
+                "{ka} at 2^332 touching {kb} at 2^-332 at the origin; one ulp of the small one"
+            );
             if let Some(lines) = moves(&big, &small, &e, &Similarity::identity(0), step, &tag) {
                 out.extend(lines);
                 got += 1;
@@ -579,10 +624,26 @@ pub fn containment_family(seed: u64, per_kind: usize) -> Vec<Line> {
     let mut r = rng(seed);
     let mut out = Vec::new();
     let containers: [(Shape, Point3<f64>, &str); 4] = [
-        (cylinder(Point3::new(0., 0., 0.), Point3::new(0., 0., 8.), 2.0), Point3::new(0., 0., 4.), "inside a cylinder"),
-        (cone(Point3::new(0., 0., 8.), Point3::new(0., 0., 0.), 6.0), Point3::new(0., 0., 2.), "inside a cone"),
-        (construct::boxed(Point3::new(0., 0., 0.), 4.0), Point3::origin(), "inside a box"),
-        (ball(Point3::new(0., 0., 0.), 4.0), Point3::origin(), "inside a ball"),
+        (
+            cylinder(Point3::new(0., 0., 0.), Point3::new(0., 0., 8.), 2.0),
+            Point3::new(0., 0., 4.),
+            "inside a cylinder",
+        ),
+        (
+            cone(Point3::new(0., 0., 8.), Point3::new(0., 0., 0.), 6.0),
+            Point3::new(0., 0., 2.),
+            "inside a cone",
+        ),
+        (
+            construct::boxed(Point3::new(0., 0., 0.), 4.0),
+            Point3::origin(),
+            "inside a box",
+        ),
+        (
+            ball(Point3::new(0., 0., 0.), 4.0),
+            Point3::origin(),
+            "inside a ball",
+        ),
     ];
     for (container, centre, note) in &containers {
         for kind in KINDS {

@@ -265,7 +265,10 @@ mod tests {
         let d = distance2(&cube, &[pt(1, 1, 1)]);
         assert_eq!(d, int(0));
         // Parallel faces one apart.
-        let shifted: Vec<P3> = cube.iter().map(|p| [p[0].clone() + int(2), p[1].clone(), p[2].clone()]).collect();
+        let shifted: Vec<P3> = cube
+            .iter()
+            .map(|p| [p[0].clone() + int(2), p[1].clone(), p[2].clone()])
+            .collect();
         assert_eq!(distance2(&cube, &shifted), int(1));
     }
 }

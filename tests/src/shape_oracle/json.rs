@@ -66,14 +66,8 @@ pub fn shape_json(s: &Shape) -> String {
             vector(h.normal())
         ),
         Shape::ConvexHull(h) => format!(r#"{{"convex": {{"points": {}}}}}"#, points(h.points())),
-        Shape::Triangle(t) => format!(
-            r#"{{"triangle": {{"points": {}}}}}"#,
-            points(t.vertices())
-        ),
-        Shape::Segment(s) => format!(
-            r#"{{"segment": {{"points": {}}}}}"#,
-            points([s.a(), s.b()])
-        ),
+        Shape::Triangle(t) => format!(r#"{{"triangle": {{"points": {}}}}}"#, points(t.vertices())),
+        Shape::Segment(s) => format!(r#"{{"segment": {{"points": {}}}}}"#, points([s.a(), s.b()])),
     }
 }
 
@@ -117,7 +111,9 @@ pub fn parse_shape(v: &Value) -> Result<Shape, String> {
     let (kind, d) = obj.iter().next().ok_or("an empty shape")?;
     let e = |e: cga_collide::Error| e.to_string();
     Ok(match kind.as_str() {
-        "ball" => Ball::new(pt(&d["center"])?, f(&d["radius"])?).map_err(e)?.into(),
+        "ball" => Ball::new(pt(&d["center"])?, f(&d["radius"])?)
+            .map_err(e)?
+            .into(),
         "capsule" => Capsule::new(pt(&d["a"])?, pt(&d["b"])?, f(&d["radius"])?)
             .map_err(e)?
             .into(),
