@@ -38,7 +38,11 @@ fn at_height(kind: &str, z: f64) -> Shape {
             let mut pts = vec![p(0.0, 0.0, z)];
             for k in 0..11 {
                 let t = f64::from(k) * 0.57;
-                pts.push(p(0.5 * t.cos(), 0.5 * t.sin(), z + 0.2 + 0.07 * f64::from(k)));
+                pts.push(p(
+                    0.5 * t.cos(),
+                    0.5 * t.sin(),
+                    z + 0.2 + 0.07 * f64::from(k),
+                ));
             }
             ConvexHull::new(pts).unwrap().into()
         }
@@ -63,16 +67,20 @@ fn below(kind: &str, z: f64) -> Shape {
                 .unwrap()
                 .into()
         }
-        Shape::ConvexHull(h) => ConvexHull::new(h.points().iter().map(|q| p(q.x, q.y, -q.z)).collect())
-            .unwrap()
-            .into(),
+        Shape::ConvexHull(h) => {
+            ConvexHull::new(h.points().iter().map(|q| p(q.x, q.y, -q.z)).collect())
+                .unwrap()
+                .into()
+        }
         other => other,
     }
 }
 
 fn shapes(c: &mut Criterion) {
     let kinds = ["ball", "capsule", "cuboid", "convex", "halfspace"];
-    let ground: Shape = HalfSpace::new(p(0.0, 0.0, 0.0), Vector3::z()).unwrap().into();
+    let ground: Shape = HalfSpace::new(p(0.0, 0.0, 0.0), Vector3::z())
+        .unwrap()
+        .into();
     // Lowest point of the upper shape at `gap` above the plane z = 0, where the lower shape's
     // highest point is (`touching`: both at 0, in contact at a point or near one; one ulp:
     // the smallest subnormal above 0).
@@ -104,7 +112,9 @@ fn shapes(c: &mut Criterion) {
                 g.bench_with_input(
                     BenchmarkId::new(format!("{ka}-{kb}"), family),
                     &(a, b),
-                    |bch, (a, b)| bch.iter(|| query::intersects(black_box(a), black_box(b)).unwrap()),
+                    |bch, (a, b)| {
+                        bch.iter(|| query::intersects(black_box(a), black_box(b)).unwrap())
+                    },
                 );
             }
         }

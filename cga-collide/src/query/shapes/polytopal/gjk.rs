@@ -82,7 +82,9 @@ pub(super) fn search(a: &Core, b: &Core) -> Found {
             break;
         }
         last = near.norm2;
-        let kept: Vec<usize> = (0..pairs.len()).filter(|i| near.used >> i & 1 == 1).collect();
+        let kept: Vec<usize> = (0..pairs.len())
+            .filter(|i| near.used >> i & 1 == 1)
+            .collect();
         pairs = kept.iter().map(|&i| pairs[i]).collect();
         found = Found {
             pairs: pairs.clone(),
@@ -130,9 +132,8 @@ fn argmax(points: &[[Rational; 3]], d: &[Rational; 3]) -> usize {
 
 /// The exact squared distance between the two cores, starting from the pairs `start`.
 pub(super) fn exact_distance2(a: &Core, b: &Core, start: &[(usize, usize)]) -> Rational {
-    let lift = |c: &Core| -> Vec<[Rational; 3]> {
-        (0..c.len()).map(|i| c.point(i).lift(&q)).collect()
-    };
+    let lift =
+        |c: &Core| -> Vec<[Rational; 3]> { (0..c.len()).map(|i| c.point(i).lift(&q)).collect() };
     let (pa, pb) = (lift(a), lift(b));
     let point = |(ia, ib): (usize, usize)| -> [Rational; 3] {
         core::array::from_fn(|k| &pa[ia][k] - &pb[ib][k])

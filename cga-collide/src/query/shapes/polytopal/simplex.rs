@@ -137,7 +137,10 @@ pub(super) fn nearest_to_origin<R: Real>(
     best.unwrap_or_else(|| Nearest {
         weights: core::array::from_fn(|i| if i == 0 { R::one() } else { zero.clone() }),
         used: 1,
-        point: points.first().cloned().unwrap_or_else(|| core::array::from_fn(|_| zero.clone())),
+        point: points
+            .first()
+            .cloned()
+            .unwrap_or_else(|| core::array::from_fn(|_| zero.clone())),
         norm2: points.first().map_or(zero.clone(), |p| dot(p, p)),
     })
 }
