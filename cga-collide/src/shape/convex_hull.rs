@@ -23,6 +23,8 @@ use crate::shape::limits::check_point;
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConvexHull {
     points: Vec<Point3<f64>>,
+    /// The points that span the hull (computed once by `new`).
+    extreme: Vec<Point3<f64>>,
 }
 
 impl ConvexHull {
@@ -41,7 +43,8 @@ impl ConvexHull {
                 source: Box::new(source),
             })?;
         }
-        Ok(ConvexHull { points })
+        let extreme = extreme_points(&points);
+        Ok(ConvexHull { points, extreme })
     }
 
     /// The points, as given.
@@ -49,9 +52,26 @@ impl ConvexHull {
         &self.points
     }
 
+    /// Points that span the same hull (a subset of [`points`](Self::points), computed once
+    /// when the hull is built): the queries search these.
+    pub fn extreme_points(&self) -> &[Point3<f64>] {
+        &self.extreme
+    }
+
     /// This hull moved by `pose`: every point mapped in `f64` and rounded once, then the hull
     /// of the rounded points.
     pub fn placed(&self, pose: &Isometry3<f64>) -> Result<Self, Error> {
         ConvexHull::new(self.points.iter().map(|p| pose * p).collect())
     }
+}
+
+/// The given points without exact repeats.
+fn extreme_points(points: &[Point3<f64>]) -> Vec<Point3<f64>> {
+    let mut out: Vec<Point3<f64>> = Vec::with_capacity(points.len());
+    for p in points {
+        if !out.contains(p) {
+            out.push(*p);
+        }
+    }
+    out
 }

@@ -1,0 +1,183 @@
+//! The polytopal view of a shape: a *core*, the convex hull of finitely many exact points,
+//! grown by a ball of radius `r` (a ball is a point grown, a capsule a segment grown, a cuboid,
+//! hull, triangle or segment is its own core with `r = 0`).
+
+use nalgebra::Point3;
+
+use crate::shape::{ConvexHull, Shape};
+use ga_core::scalar::Ring;
+
+/// A point or vector in `f64`.
+pub(super) type P3 = [f64; 3];
+
+/// One exact point: the exact sum of up to four `f64` vectors. A cuboid's corner
+/// `c ± U ± V ± W` is such a sum (negating a vector is exact, so the signs live in the terms);
+/// every other core point is a single term.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct ExactPoint {
+    terms: [P3; 4],
+    len: usize,
+}
+
+impl ExactPoint {
+    fn single(p: P3) -> Self {
+        ExactPoint {
+            terms: [p, [0.0; 3], [0.0; 3], [0.0; 3]],
+            len: 1,
+        }
+    }
+
+    /// The point's coordinates in the ring `R`, each the sum of its lifted terms (exact for
+    /// exact rings, error-bounded for [`crate::exact::ErrF64`]).
+    #[inline]
+    pub(super) fn lift<R: Ring>(&self, lift: &dyn Fn(f64) -> R) -> [R; 3] {
+        core::array::from_fn(|k| {
+            let mut s = lift(self.terms[0][k]);
+            for t in &self.terms[1..self.len] {
+                s = s + lift(t[k]);
+            }
+            s
+        })
+    }
+}
+
+enum Points<'a> {
+    /// Up to three points given inline (ball centre, capsule axis, triangle, segment).
+    Few { points: [P3; 3], len: usize },
+    /// A hull's extreme points.
+    Hull(&'a ConvexHull),
+    /// A parallelepiped's eight corners: corner `i` takes `+axis k` when bit `k` of `i` is set.
+    Box { centre: P3, axes: [P3; 3] },
+}
+
+/// A shape as core ⊕ ball(radius).
+pub(super) struct Core<'a> {
+    points: Points<'a>,
+    /// The radius of the ball the core is grown by.
+    pub(super) radius: f64,
+}
+
+fn p3(p: &Point3<f64>) -> P3 {
+    [p.x, p.y, p.z]
+}
+
+impl<'a> Core<'a> {
+    /// The core of `shape`; `None` for the kinds that are not a grown polytope (half-spaces,
+    /// cylinders, cones).
+    pub(super) fn of(shape: &'a Shape) -> Option<Core<'a>> {
+        let few = |pts: &[&Point3<f64>], radius: f64| {
+            let mut points = [[0.0; 3]; 3];
+            for (slot, p) in points.iter_mut().zip(pts) {
+                *slot = p3(p);
+            }
+            Core {
+                points: Points::Few {
+                    points,
+                    len: pts.len(),
+                },
+                radius,
+            }
+        };
+        Some(match shape {
+            Shape::Ball(b) => few(&[b.centre()], b.radius()),
+            Shape::Capsule(c) => few(&[c.a(), c.b()], c.radius()),
+            Shape::Segment(s) => few(&[s.a(), s.b()], 0.0),
+            Shape::Triangle(t) => {
+                let [a, b, c] = t.vertices();
+                few(&[a, b, c], 0.0)
+            }
+            Shape::Cuboid(c) => Core {
+                points: Points::Box {
+                    centre: p3(c.centre()),
+                    axes: c.half_axes().map(|h| [h.x, h.y, h.z]),
+                },
+                radius: 0.0,
+            },
+            Shape::ConvexHull(h) => Core {
+                points: Points::Hull(h),
+                radius: 0.0,
+            },
+            Shape::HalfSpace(_) | Shape::Cylinder(_) | Shape::Cone(_) => return None,
+        })
+    }
+
+    /// How many points span the core.
+    pub(super) fn len(&self) -> usize {
+        match &self.points {
+            Points::Few { len, .. } => *len,
+            Points::Hull(h) => h.extreme_points().len(),
+            Points::Box { .. } => 8,
+        }
+    }
+
+    /// Point `i` exactly.
+    pub(super) fn point(&self, i: usize) -> ExactPoint {
+        match &self.points {
+            Points::Few { points, .. } => ExactPoint::single(points[i]),
+            Points::Hull(h) => ExactPoint::single(p3(&h.extreme_points()[i])),
+            Points::Box { centre, axes } => {
+                let mut terms = [*centre; 4];
+                for (k, axis) in axes.iter().enumerate() {
+                    terms[k + 1] = if i >> k & 1 == 1 {
+                        *axis
+                    } else {
+                        axis.map(|x| -x)
+                    };
+                }
+                ExactPoint { terms, len: 4 }
+            }
+        }
+    }
+
+    /// Point `i` rounded to `f64` (for the floating-point search only).
+    pub(super) fn approx(&self, i: usize) -> P3 {
+        match &self.points {
+            Points::Few { points, .. } => points[i],
+            Points::Hull(h) => p3(&h.extreme_points()[i]),
+            Points::Box { .. } => {
+                let e = self.point(i);
+                core::array::from_fn(|k| {
+                    e.terms[0][k] + e.terms[1][k] + e.terms[2][k] + e.terms[3][k]
+                })
+            }
+        }
+    }
+
+    /// The index of a point maximising `d · x` (in `f64`: a search step, not a decision).
+    pub(super) fn support(&self, d: &P3) -> usize {
+        let dot = |p: &P3| d[0] * p[0] + d[1] * p[1] + d[2] * p[2];
+        match &self.points {
+            Points::Few { points, len } => argmax(points[..*len].iter().map(dot)),
+            Points::Hull(h) => argmax(h.extreme_points().iter().map(|p| dot(&p3(p)))),
+            Points::Box { axes, .. } => axes
+                .iter()
+                .enumerate()
+                .map(|(k, a)| usize::from(dot(a) > 0.0) << k)
+                .sum(),
+        }
+    }
+
+    /// The largest magnitude of a coordinate or the radius (a scale for error bounds).
+    pub(super) fn magnitude(&self) -> f64 {
+        let mut m = self.radius;
+        for i in 0..self.len() {
+            let e = self.point(i);
+            for t in &e.terms[..e.len] {
+                for x in t {
+                    m = m.max(x.abs());
+                }
+            }
+        }
+        m
+    }
+}
+
+fn argmax(values: impl Iterator<Item = f64>) -> usize {
+    let mut best = (0, f64::NEG_INFINITY);
+    for (i, v) in values.enumerate() {
+        if v > best.1 {
+            best = (i, v);
+        }
+    }
+    best.0
+}
