@@ -25,7 +25,9 @@ fn ball(c: Point3<f64>, r: f64) -> Shape {
 }
 
 fn ground(s: f64, z: f64) -> Shape {
-    HalfSpace::new(p(s, 0.0, 0.0, z), Vector3::z()).unwrap().into()
+    HalfSpace::new(p(s, 0.0, 0.0, z), Vector3::z())
+        .unwrap()
+        .into()
 }
 
 fn boxed(c: Point3<f64>, h: [f64; 3]) -> Shape {
@@ -74,26 +76,62 @@ fn cylinders_and_cones_on_half_spaces() {
             name: "cylinder lying on a plane",
             t0: 1.0,
             apart_above: true,
-            build: |s, z| (cyl(p(s, 0.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z), p(s, 4.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z), s), ground(s, 0.0)),
+            build: |s, z| {
+                (
+                    cyl(
+                        p(s, 0.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z),
+                        p(s, 4.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    ground(s, 0.0),
+                )
+            },
         },
         Family {
             name: "oblique cylinder on its rim",
             t0: 1.5,
             apart_above: true,
             // axis (3, 0, 4)/5, radius 2.5: the rim reaches 1.5 below the cap centre.
-            build: |s, z| (cyl(Point3::new(0.0, 0.0, z), Point3::new(3.0 * s, 0.0, z + 4.0 * s), 2.5 * s), ground(s, 0.0)),
+            build: |s, z| {
+                (
+                    cyl(
+                        Point3::new(0.0, 0.0, z),
+                        Point3::new(3.0 * s, 0.0, z + 4.0 * s),
+                        2.5 * s,
+                    ),
+                    ground(s, 0.0),
+                )
+            },
         },
         Family {
             name: "cone standing on its base",
             t0: 0.0,
             apart_above: true,
-            build: |s, z| (cone(p(s, 0.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z), Point3::new(0.0, 0.0, z), s), ground(s, 0.0)),
+            build: |s, z| {
+                (
+                    cone(
+                        p(s, 0.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z),
+                        Point3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    ground(s, 0.0),
+                )
+            },
         },
         Family {
             name: "cone standing on its apex",
             t0: 0.0,
             apart_above: true,
-            build: |s, z| (cone(Point3::new(0.0, 0.0, z), p(s, 1.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z), s), ground(s, 0.0)),
+            build: |s, z| {
+                (
+                    cone(
+                        Point3::new(0.0, 0.0, z),
+                        p(s, 1.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    ground(s, 0.0),
+                )
+            },
         },
         Family {
             name: "cone lying on its slant",
@@ -101,7 +139,14 @@ fn cylinders_and_cones_on_half_spaces() {
             apart_above: true,
             // axis (4, 0, -3)/5 from the apex on the plane, tan(half angle) = 3/4 = r/5: the
             // slant line from the apex runs along the plane z = 2.
-            build: |s, z| (cone(p(s, 0.0, 0.0, 2.0), p(s, 4.0, 0.0, -1.0), 3.75 * s), HalfSpace::new(Point3::new(0.0, 0.0, z), -Vector3::z()).unwrap().into()),
+            build: |s, z| {
+                (
+                    cone(p(s, 0.0, 0.0, 2.0), p(s, 4.0, 0.0, -1.0), 3.75 * s),
+                    HalfSpace::new(Point3::new(0.0, 0.0, z), -Vector3::z())
+                        .unwrap()
+                        .into(),
+                )
+            },
         },
     ];
     for f in &families {
@@ -114,7 +159,11 @@ fn an_irrational_tangency_is_decided_exactly() {
     // Axis (1, 1, 1) from height h, radius 1: the lowest rim point is at h − √(2/3).
     let h0 = (2.0f64 / 3.0).sqrt();
     for h in [h0.next_down(), h0, h0.next_up()] {
-        let a = cyl(Point3::new(0.0, 0.0, h), Point3::new(1.0, 1.0, h + 1.0), 1.0);
+        let a = cyl(
+            Point3::new(0.0, 0.0, h),
+            Point3::new(1.0, 1.0, h + 1.0),
+            1.0,
+        );
         let hr = rational_from_f64(h).unwrap();
         let truth = &hr * &hr * cga_collide::ga_core::scalar::Rational::from_integer(3.into())
             <= cga_collide::ga_core::scalar::Rational::from_integer(2.into());
@@ -129,39 +178,69 @@ fn balls_on_cylinders_and_cones() {
             name: "ball on a cylinder's side",
             t0: 1.0,
             apart_above: false,
-            build: |s, r| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s), ball(p(s, 2.0, 0.0, 2.0), r)),
+            build: |s, r| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    ball(p(s, 2.0, 0.0, 2.0), r),
+                )
+            },
         },
         Family {
             name: "ball on a cylinder's cap",
             t0: 1.0,
             apart_above: false,
-            build: |s, r| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s), ball(p(s, 0.5, 0.25, 5.0), r)),
+            build: |s, r| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    ball(p(s, 0.5, 0.25, 5.0), r),
+                )
+            },
         },
         Family {
             name: "ball on a cylinder's rim",
             t0: 0.625,
             apart_above: false,
-            build: |s, r| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s), ball(p(s, 1.375, 0.0, 4.5), r)),
+            build: |s, r| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    ball(p(s, 1.375, 0.0, 4.5), r),
+                )
+            },
         },
         Family {
             name: "ball on a cone's apex",
             t0: 3.0,
             apart_above: true,
-            build: |s, z| (cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s), ball(Point3::new(0.0, 0.0, z), s)),
+            build: |s, z| {
+                (
+                    cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s),
+                    ball(Point3::new(0.0, 0.0, z), s),
+                )
+            },
         },
         Family {
             name: "ball on a cone's rim",
             t0: 0.625,
             apart_above: false,
             // direction (3, 0, -4)/5 from the rim point (1, 0, 0) is in the rim's normal cone.
-            build: |s, r| (cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s), ball(p(s, 1.375, 0.0, -0.5), r)),
+            build: |s, r| {
+                (
+                    cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s),
+                    ball(p(s, 1.375, 0.0, -0.5), r),
+                )
+            },
         },
         Family {
             name: "ball on a cone's slant",
             t0: 1.25,
             apart_above: false,
             // slant from (3, 0, 0) to the apex (0, 0, 4), outward normal (4, 0, 3)/5.
-            build: |s, r| (cone(p(s, 0.0, 0.0, 4.0), p(s, 0.0, 0.0, 0.0), 3.0 * s), ball(p(s, 2.5, 0.0, 2.75), r)),
+            build: |s, r| {
+                (
+                    cone(p(s, 0.0, 0.0, 4.0), p(s, 0.0, 0.0, 0.0), 3.0 * s),
+                    ball(p(s, 2.5, 0.0, 2.75), r),
+                )
+            },
         },
     ];
     for f in &families {
@@ -176,76 +255,170 @@ fn cylinders_and_cones_on_boxes_and_polygons() {
             name: "cylinder lying on a box face",
             t0: 1.0,
             apart_above: true,
-            build: |s, z| (cyl(p(s, -1.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z), p(s, 1.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z), s), boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s])),
+            build: |s, z| {
+                (
+                    cyl(
+                        p(s, -1.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z),
+                        p(s, 1.0, 0.0, 0.0) + Vector3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s]),
+                )
+            },
         },
         Family {
             name: "cylinder standing on a box corner region",
             t0: 0.0,
             apart_above: true,
-            build: |s, z| (cyl(Point3::new(2.5 * s, 2.5 * s, z), Point3::new(2.5 * s, 2.5 * s, z + 2.0 * s), s), boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s])),
+            build: |s, z| {
+                (
+                    cyl(
+                        Point3::new(2.5 * s, 2.5 * s, z),
+                        Point3::new(2.5 * s, 2.5 * s, z + 2.0 * s),
+                        s,
+                    ),
+                    boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s]),
+                )
+            },
         },
         Family {
             name: "box edge along a cylinder",
             t0: 2.0,
             apart_above: true,
             // a box turned 45 degrees about x, its lowest edge the line y = 0, z = centre − 1.
-            build: |s, z| (
-                cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s),
-                Cuboid::new(Point3::new(2.0 * s, 0.0, z), [Vector3::new(2.0 * s, 0.0, 0.0), Vector3::new(0.0, 0.5 * s, 0.5 * s), Vector3::new(0.0, -0.5 * s, 0.5 * s)]).unwrap().into(),
-            ),
+            build: |s, z| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s),
+                    Cuboid::new(
+                        Point3::new(2.0 * s, 0.0, z),
+                        [
+                            Vector3::new(2.0 * s, 0.0, 0.0),
+                            Vector3::new(0.0, 0.5 * s, 0.5 * s),
+                            Vector3::new(0.0, -0.5 * s, 0.5 * s),
+                        ],
+                    )
+                    .unwrap()
+                    .into(),
+                )
+            },
         },
         Family {
             name: "box corner on a cylinder's rim",
             t0: 2.0,
             apart_above: true,
             // the rim point (1, 0, 4); the box's face x = centre − 1 and its bottom z = 4.
-            build: |s, x| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s), boxed(Point3::new(x, 0.0, 5.0 * s), [s, s, s])),
+            build: |s, x| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    boxed(Point3::new(x, 0.0, 5.0 * s), [s, s, s]),
+                )
+            },
         },
         Family {
             name: "triangle on a cylinder's side",
             t0: 1.0,
             apart_above: true,
-            build: |s, z| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s), Triangle::new(Point3::new(s, -s, z), Point3::new(3.0 * s, -s, z), Point3::new(2.0 * s, s, z)).unwrap().into()),
+            build: |s, z| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s),
+                    Triangle::new(
+                        Point3::new(s, -s, z),
+                        Point3::new(3.0 * s, -s, z),
+                        Point3::new(2.0 * s, s, z),
+                    )
+                    .unwrap()
+                    .into(),
+                )
+            },
         },
         Family {
             name: "segment crossing over a cylinder",
             t0: 1.0,
             apart_above: true,
-            build: |s, z| (cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s), Segment::new(Point3::new(s, -5.0 * s, z), Point3::new(3.0 * s, 5.0 * s, z)).unwrap().into()),
+            build: |s, z| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 4.0, 0.0, 0.0), s),
+                    Segment::new(
+                        Point3::new(s, -5.0 * s, z),
+                        Point3::new(3.0 * s, 5.0 * s, z),
+                    )
+                    .unwrap()
+                    .into(),
+                )
+            },
         },
         Family {
             name: "cone standing on its apex on a box",
             t0: 0.0,
             apart_above: true,
-            build: |s, z| (cone(Point3::new(0.5 * s, 0.0, z), p(s, 0.5, 0.0, 2.0) + Vector3::new(0.0, 0.0, z), s), boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s])),
+            build: |s, z| {
+                (
+                    cone(
+                        Point3::new(0.5 * s, 0.0, z),
+                        p(s, 0.5, 0.0, 2.0) + Vector3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s]),
+                )
+            },
         },
         Family {
             name: "cone standing on its base on a box",
             t0: 0.0,
             apart_above: true,
-            build: |s, z| (cone(p(s, 0.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z), Point3::new(0.0, 0.0, z), s), boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s])),
+            build: |s, z| {
+                (
+                    cone(
+                        p(s, 0.0, 0.0, 2.0) + Vector3::new(0.0, 0.0, z),
+                        Point3::new(0.0, 0.0, z),
+                        s,
+                    ),
+                    boxed(p(s, 0.0, 0.0, -1.0), [3.0 * s, 3.0 * s, s]),
+                )
+            },
         },
         Family {
             name: "cone lying on its slant on a box",
             t0: 7.0,
             apart_above: true,
             // the box's bottom face is z = centre − 5, the cone's top slant line z = 2.
-            build: |s, z| (cone(p(s, 1.0, 0.0, 2.0), p(s, 5.0, 0.0, -1.0), 3.75 * s), boxed(Point3::new(2.0 * s, 0.0, z), [5.0 * s, 5.0 * s, 5.0 * s])),
+            build: |s, z| {
+                (
+                    cone(p(s, 1.0, 0.0, 2.0), p(s, 5.0, 0.0, -1.0), 3.75 * s),
+                    boxed(Point3::new(2.0 * s, 0.0, z), [5.0 * s, 5.0 * s, 5.0 * s]),
+                )
+            },
         },
         Family {
             name: "cone apex against a hull's face",
             t0: 0.0,
             apart_above: false,
-            build: |s, x| (
-                cone(Point3::new(x, 0.0, 0.0), p(s, -2.0, 0.0, 0.0), s),
-                ConvexHull::new(vec![p(s, 0.0, -1.0, -1.0), p(s, 0.0, 1.0, -1.0), p(s, 0.0, 0.0, 1.0), p(s, 2.0, 0.0, 0.0)]).unwrap().into(),
-            ),
+            build: |s, x| {
+                (
+                    cone(Point3::new(x, 0.0, 0.0), p(s, -2.0, 0.0, 0.0), s),
+                    ConvexHull::new(vec![
+                        p(s, 0.0, -1.0, -1.0),
+                        p(s, 0.0, 1.0, -1.0),
+                        p(s, 0.0, 0.0, 1.0),
+                        p(s, 2.0, 0.0, 0.0),
+                    ])
+                    .unwrap()
+                    .into(),
+                )
+            },
         },
         Family {
             name: "segment grazing a cone's rim",
             t0: 1.0,
             apart_above: true,
-            build: |s, x| (cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s), Segment::new(Point3::new(x, -s, 0.0), Point3::new(x, s, 0.0)).unwrap().into()),
+            build: |s, x| {
+                (
+                    cone(p(s, 0.0, 0.0, 2.0), p(s, 0.0, 0.0, 0.0), s),
+                    Segment::new(Point3::new(x, -s, 0.0), Point3::new(x, s, 0.0))
+                        .unwrap()
+                        .into(),
+                )
+            },
         },
         Family {
             name: "hull along a cone's slant, touching the apex plane",
@@ -254,10 +427,20 @@ fn cylinders_and_cones_on_boxes_and_polygons() {
             // the hull lies in x >= z/2 and holds the slant segment from (0.5, 0, 1) to
             // (1, 0, 2); its vertex (1, 0, 0) is on the apex plane z = 0 (the rays' case).
             // The cone moves along x.
-            build: |s, x| (
-                cone(Point3::new(x, 0.0, 0.0), Point3::new(x, 0.0, 2.0 * s), s),
-                ConvexHull::new(vec![p(s, 0.5, 0.0, 1.0), p(s, 1.0, 0.0, 2.0), p(s, 1.0, 0.0, 0.0), p(s, 2.0, 1.0, 1.0), p(s, 2.0, -1.0, 1.0)]).unwrap().into(),
-            ),
+            build: |s, x| {
+                (
+                    cone(Point3::new(x, 0.0, 0.0), Point3::new(x, 0.0, 2.0 * s), s),
+                    ConvexHull::new(vec![
+                        p(s, 0.5, 0.0, 1.0),
+                        p(s, 1.0, 0.0, 2.0),
+                        p(s, 1.0, 0.0, 0.0),
+                        p(s, 2.0, 1.0, 1.0),
+                        p(s, 2.0, -1.0, 1.0),
+                    ])
+                    .unwrap()
+                    .into(),
+                )
+            },
         },
     ];
     for f in &families {
@@ -268,22 +451,94 @@ fn cylinders_and_cones_on_boxes_and_polygons() {
 #[test]
 fn containment_and_zero_radii() {
     let c = cyl(Point3::origin(), Point3::new(0.0, 0.0, 4.0), 2.0);
-    check("small box inside", &c, &boxed(Point3::new(0.0, 0.0, 2.0), [0.5; 3]), true);
-    check("cylinder inside a big box", &c, &boxed(Point3::origin(), [10.0; 3]), true);
-    check("ball inside", &c, &ball(Point3::new(0.5, 0.0, 1.0), 0.25), true);
-    check("cylinder inside a ball", &c, &ball(Point3::origin(), 100.0), true);
+    check(
+        "small box inside",
+        &c,
+        &boxed(Point3::new(0.0, 0.0, 2.0), [0.5; 3]),
+        true,
+    );
+    check(
+        "cylinder inside a big box",
+        &c,
+        &boxed(Point3::origin(), [10.0; 3]),
+        true,
+    );
+    check(
+        "ball inside",
+        &c,
+        &ball(Point3::new(0.5, 0.0, 1.0), 0.25),
+        true,
+    );
+    check(
+        "cylinder inside a ball",
+        &c,
+        &ball(Point3::origin(), 100.0),
+        true,
+    );
     let k = cone(Point3::new(0.0, 0.0, 4.0), Point3::origin(), 2.0);
-    check("triangle inside a cone", &k, &Triangle::new(Point3::new(0.1, 0.0, 1.0), Point3::new(-0.1, 0.1, 1.0), Point3::new(0.0, -0.1, 1.5)).unwrap().into(), true);
-    check("cone inside a hull", &k, &ConvexHull::new(vec![Point3::new(-9.0, -9.0, -1.0), Point3::new(9.0, -9.0, -1.0), Point3::new(0.0, 9.0, -1.0), Point3::new(0.0, 0.0, 20.0)]).unwrap().into(), true);
+    check(
+        "triangle inside a cone",
+        &k,
+        &Triangle::new(
+            Point3::new(0.1, 0.0, 1.0),
+            Point3::new(-0.1, 0.1, 1.0),
+            Point3::new(0.0, -0.1, 1.5),
+        )
+        .unwrap()
+        .into(),
+        true,
+    );
+    check(
+        "cone inside a hull",
+        &k,
+        &ConvexHull::new(vec![
+            Point3::new(-9.0, -9.0, -1.0),
+            Point3::new(9.0, -9.0, -1.0),
+            Point3::new(0.0, 9.0, -1.0),
+            Point3::new(0.0, 0.0, 20.0),
+        ])
+        .unwrap()
+        .into(),
+        true,
+    );
     // Radius 0: the axis segment.
     let thin = cyl(Point3::origin(), Point3::new(0.0, 0.0, 4.0), 0.0);
-    check("thin cylinder against a ball at its end", &thin, &ball(Point3::new(0.0, 0.0, 5.0), 1.0), true);
-    check("thin cylinder beside a ball", &thin, &ball(Point3::new(1.0, 0.0, 2.0), 1.0f64.next_down()), false);
+    check(
+        "thin cylinder against a ball at its end",
+        &thin,
+        &ball(Point3::new(0.0, 0.0, 5.0), 1.0),
+        true,
+    );
+    check(
+        "thin cylinder beside a ball",
+        &thin,
+        &ball(Point3::new(1.0, 0.0, 2.0), 1.0f64.next_down()),
+        false,
+    );
     check("thin cylinder on a plane", &thin, &ground(1.0, 0.0), true);
     let needle = cone(Point3::origin(), Point3::new(4.0, 0.0, 0.0), 0.0);
-    check("needle through a box", &needle, &boxed(Point3::new(2.0, 0.0, 0.0), [0.5; 3]), true);
-    check("thin cylinder against a cylinder", &thin, &cyl(Point3::new(-1.0, 1.0, 2.0), Point3::new(1.0, 1.0, 2.0), 1.0), true);
-    check("thin cylinder apart from a cylinder", &thin, &cyl(Point3::new(-1.0, 1.0, 2.0), Point3::new(1.0, 1.0, 2.0), 1.0f64.next_down()), false);
+    check(
+        "needle through a box",
+        &needle,
+        &boxed(Point3::new(2.0, 0.0, 0.0), [0.5; 3]),
+        true,
+    );
+    check(
+        "thin cylinder against a cylinder",
+        &thin,
+        &cyl(Point3::new(-1.0, 1.0, 2.0), Point3::new(1.0, 1.0, 2.0), 1.0),
+        true,
+    );
+    check(
+        "thin cylinder apart from a cylinder",
+        &thin,
+        &cyl(
+            Point3::new(-1.0, 1.0, 2.0),
+            Point3::new(1.0, 1.0, 2.0),
+            1.0f64.next_down(),
+        ),
+        false,
+    );
 }
 
 #[test]
@@ -296,7 +551,9 @@ fn within_distance_is_exact_for_balls_and_planes() {
     assert!(!within_distance(&c, &floor, gap.next_down()).unwrap());
     // An oblique normal: the plane x + z <= -√2·gap·... use a normal (3, 0, 4): distance is
     // (n·x − n·p)/5 exactly.
-    let tilted: Shape = HalfSpace::new(Point3::new(-5.0, 0.0, 0.0), Vector3::new(3.0, 0.0, 4.0)).unwrap().into();
+    let tilted: Shape = HalfSpace::new(Point3::new(-5.0, 0.0, 0.0), Vector3::new(3.0, 0.0, 4.0))
+        .unwrap()
+        .into();
     // lowest point of the cylinder along (3,0,4)/5: cap a at (0,0,1): 4/5·1 − 1·|n×d|/|d|/5
     // = 0.8 − 0.8 = 0; the plane is at n·x = −15, i.e. distance 3.
     assert!(within_distance(&c, &tilted, 3.0).unwrap());
@@ -324,4 +581,116 @@ fn unsupported_pairs_say_so() {
         within_distance(&a, &boxy, 1.0),
         Err(Error::UnsupportedPair { .. })
     ));
+}
+
+#[test]
+fn parallel_and_crossed_cylinders() {
+    let families = [
+        Family {
+            name: "parallel cylinders r1 + r2 apart",
+            t0: 1.5,
+            apart_above: true,
+            build: |s, x| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    cyl(
+                        Point3::new(x, 0.0, s),
+                        Point3::new(x, 0.0, 5.0 * s),
+                        0.5 * s,
+                    ),
+                )
+            },
+        },
+        Family {
+            name: "opposite parallel cylinders end to end",
+            t0: 4.0,
+            apart_above: true,
+            build: |s, z| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    cyl(
+                        Point3::new(0.25 * s, 0.0, z + 3.0 * s),
+                        Point3::new(0.25 * s, 0.0, z),
+                        0.5 * s,
+                    ),
+                )
+            },
+        },
+        Family {
+            name: "crossed cylinders touching",
+            t0: 2.0,
+            apart_above: true,
+            build: |s, z| {
+                (
+                    cyl(p(s, -2.0, 0.0, 0.0), p(s, 2.0, 0.0, 0.0), s),
+                    cyl(
+                        Point3::new(0.0, -2.0 * s, z),
+                        Point3::new(0.0, 2.0 * s, z),
+                        s,
+                    ),
+                )
+            },
+        },
+        Family {
+            name: "crossed cylinder and capsule touching",
+            t0: 1.5,
+            apart_above: true,
+            build: |s, z| {
+                (
+                    cyl(p(s, -2.0, 0.0, 0.0), p(s, 2.0, 0.0, 0.0), s),
+                    cga_collide::shape::Capsule::new(
+                        Point3::new(0.0, -2.0 * s, z),
+                        Point3::new(0.0, 2.0 * s, z),
+                        0.5 * s,
+                    )
+                    .unwrap()
+                    .into(),
+                )
+            },
+        },
+    ];
+    for f in &families {
+        run(f);
+    }
+    let a = cyl(Point3::origin(), Point3::new(0.0, 0.0, 4.0), 1.0);
+    let b = cyl(Point3::new(2.0, 0.0, 5.0), Point3::new(2.0, 0.0, 9.0), 0.5);
+    // axial gap 1, radial gap 0.5: distance √1.25.
+    let d = 1.25f64.sqrt();
+    let inside = within_distance(&a, &b, d.next_up()).unwrap()
+        && !within_distance(&a, &b, d.next_down()).unwrap();
+    assert!(inside);
+}
+
+#[test]
+fn certified_distances_to_balls_and_planes() {
+    let gap = 2f64.powi(-40);
+    let c = cyl(Point3::new(0.0, 0.0, 1.0), Point3::new(4.0, 0.0, 1.0), 1.0);
+    let floor = ground(1.0, -gap);
+    let d = cga_collide::query::distance(&c, &floor).unwrap();
+    assert!(
+        d.distance - d.error_bound <= gap && gap <= d.distance + d.error_bound,
+        "{d:?}"
+    );
+    assert!(d.error_bound <= 1e-13, "{d:?}");
+    let d = cga_collide::query::distance(&floor, &c).unwrap();
+    assert!(
+        (d.witness_a.z + gap).abs() < 1e-15 && (d.witness_b.z - 0.0).abs() < 1e-15,
+        "{d:?}"
+    );
+    let k = cone(Point3::new(0.0, 0.0, 2.0), Point3::origin(), 1.0);
+    let b = ball(Point3::new(1.375, 0.0, -0.5), 0.5);
+    let d = cga_collide::query::distance(&k, &b).unwrap();
+    assert!(
+        d.distance - d.error_bound <= 0.125 && 0.125 <= d.distance + d.error_bound,
+        "{d:?}"
+    );
+    assert!(d.error_bound < 1e-12, "{d:?}");
+    let touching = ball(Point3::new(1.375, 0.0, -0.5), 0.625);
+    let d = cga_collide::query::distance(&touching, &k).unwrap();
+    assert_eq!((d.distance, d.error_bound), (0.0, 0.0));
+    let inside = ball(Point3::new(0.0, 0.0, 0.5), 0.125);
+    assert_eq!(
+        cga_collide::query::distance(&k, &inside).unwrap().distance,
+        0.0
+    );
 }

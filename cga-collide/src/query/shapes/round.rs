@@ -8,6 +8,9 @@
 //! | cylinder – cylinder, parallel axes | exact | exact | interval × disc in a frame along the axis ([`curved`]) |
 //! | round – capsule, cylinder, cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside ([`curved`]) |
 //!
+//! `distance` is certified for the half-space and ball pairs (an `f64` estimate, its bound proved
+//! by the exact `within_distance`, [`distance`]); the other pairs return `UnsupportedPair`.
+//!
 //! Shapes that collapse (a zero radius, a capsule with equal ends, a polytope of one point) are
 //! replaced by the segment or point they are, so more pairs answer exactly.
 
@@ -20,6 +23,7 @@ use crate::query::CertifiedDistance;
 use crate::shape::Shape;
 
 mod curved;
+mod distance;
 mod exact3;
 mod half_space;
 mod meridian;
@@ -68,7 +72,11 @@ fn other(s: &Shape) -> Other {
                     for sw in [false, true] {
                         let mut p = centre.clone();
                         for (axis, negative) in [(&u, su), (&v, sv), (&w, sw)] {
-                            p = if negative { sub(&p, axis) } else { add(&p, axis) };
+                            p = if negative {
+                                sub(&p, axis)
+                            } else {
+                                add(&p, axis)
+                            };
                         }
                         corners.push(p);
                     }
@@ -133,6 +141,40 @@ pub(crate) fn within_distance(a: &Shape, b: &Shape, c: f64) -> Result<bool, Erro
     answer("within_distance", a, b, &q(c))
 }
 
+fn solid(s: &Shape) -> Option<distance::Solid> {
+    match s {
+        Shape::Cylinder(c) => Some(distance::Solid::cylinder(c)),
+        Shape::Cone(c) => Some(distance::Solid::cone(c)),
+        _ => None,
+    }
+}
+
+/// The certified distance with the round shape first, where it is available.
+fn distance_round_first(
+    round: &Shape,
+    other: &Shape,
+    within: impl Fn(f64) -> bool,
+) -> Option<CertifiedDistance> {
+    let s = solid(round)?;
+    match other {
+        Shape::Ball(b) => Some(distance::to_ball(&s, b, within)),
+        Shape::HalfSpace(h) => Some(distance::to_half_space(&s, h, within)),
+        _ => None,
+    }
+}
+
 pub(crate) fn distance(a: &Shape, b: &Shape) -> Result<CertifiedDistance, Error> {
+    // `within_distance` always decides these pairs; `false` is never reached.
+    let within = |c: f64| answer("within_distance", a, b, &q(c)).unwrap_or(false);
+    if let Some(d) = distance_round_first(a, b, within) {
+        return Ok(d);
+    }
+    if let Some(d) = distance_round_first(b, a, within) {
+        return Ok(CertifiedDistance {
+            witness_a: d.witness_b,
+            witness_b: d.witness_a,
+            ..d
+        });
+    }
     Err(unsupported("distance", a, b))
 }

@@ -112,7 +112,10 @@ impl Tube {
                 (self.end(), self.radius.clone()),
             ],
             Kind::Cylinder | Kind::Cone => {
-                vec![(self.origin.clone(), Rational::zero()), (self.end(), Rational::zero())]
+                vec![
+                    (self.origin.clone(), Rational::zero()),
+                    (self.end(), Rational::zero()),
+                ]
             }
         }
     }

@@ -58,7 +58,8 @@ pub(crate) fn within_plane(round: &Round, on: &V3, normal: &V3, e: &Rational) ->
     };
     match round.profile {
         Profile::Cylinder => {
-            disc_within(&round.origin, round, &plane, e) || disc_within(&round.end, round, &plane, e)
+            disc_within(&round.origin, round, &plane, e)
+                || disc_within(&round.end, round, &plane, e)
         }
         Profile::Cone => {
             point_within(&round.origin, &plane, e) || disc_within(&round.end, round, &plane, e)

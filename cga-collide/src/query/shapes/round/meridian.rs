@@ -57,7 +57,10 @@ pub(crate) fn point_within(round: &Round, v: &V3, e: &Rational) -> bool {
         y: l.clone(),
     };
     let zero = || Surd::rational(Rational::zero());
-    let p: P2 = [Surd::rational(dot(&rel, &round.axis)), Surd::root_x(Rational::from_integer(1.into()))];
+    let p: P2 = [
+        Surd::rational(dot(&rel, &round.axis)),
+        Surd::root_x(Rational::from_integer(1.into())),
+    ];
     let rim = Surd::root_y(round.radius.clone());
     let profile: Vec<P2> = match round.profile {
         Profile::Cylinder => vec![

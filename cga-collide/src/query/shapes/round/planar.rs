@@ -125,11 +125,7 @@ fn in_swept_segment(v: &V3, u: &V3, w: &V3, ray: &V3, chart: Chart) -> bool {
     let rel = sub(v, u);
     let s = chart.cross(&rel, ray); // s/det in [0, 1]
     let t = chart.cross(&e, &rel); // t/det >= 0
-    let (s, t) = if det.is_negative() {
-        (-s, -t)
-    } else {
-        (s, t)
-    };
+    let (s, t) = if det.is_negative() { (-s, -t) } else { (s, t) };
     let det = det.abs();
     !s.is_negative() && s <= det && !t.is_negative()
 }
@@ -149,7 +145,12 @@ pub(crate) fn disc_meets(
     }
     let chart = Chart::new(normal);
     let polygon = hull(points, chart);
-    let edges = || polygon.iter().zip(polygon.iter().cycle().skip(1)).take(polygon.len());
+    let edges = || {
+        polygon
+            .iter()
+            .zip(polygon.iter().cycle().skip(1))
+            .take(polygon.len())
+    };
     // The centre inside the bounded part.
     if polygon.len() >= 3
         && edges().all(|(u, w)| {
@@ -176,7 +177,10 @@ pub(crate) fn disc_meets(
             }
         }
         for w in &polygon[n + 1..] {
-            if rays.iter().any(|ray| in_swept_segment(centre, u, w, ray, chart)) {
+            if rays
+                .iter()
+                .any(|ray| in_swept_segment(centre, u, w, ray, chart))
+            {
                 return true;
             }
         }
