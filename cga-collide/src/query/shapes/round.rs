@@ -46,7 +46,7 @@ enum Other {
     /// The convex hull of exact points (not empty).
     Polytope(Vec<V3>),
     /// A ball (radius `0`: a point).
-    Ball(V3, Rational),
+    Ball(Box<V3>, Rational),
     HalfSpace(crate::shape::HalfSpace),
     /// Another curved shape: a cylinder or cone with a positive radius, or a capsule.
     Curved,
@@ -58,7 +58,7 @@ fn segment(a: &Point3<f64>, b: &Point3<f64>) -> Other {
 
 fn other(s: &Shape) -> Other {
     match s {
-        Shape::Ball(b) => Other::Ball(point(b.centre()), q(b.radius())),
+        Shape::Ball(b) => Other::Ball(Box::new(point(b.centre())), q(b.radius())),
         Shape::HalfSpace(h) => Other::HalfSpace(*h),
         Shape::Segment(s) => segment(s.a(), s.b()),
         Shape::Triangle(t) => Other::Polytope(t.vertices().iter().map(point).collect()),
@@ -85,7 +85,7 @@ fn other(s: &Shape) -> Other {
             Other::Polytope(corners)
         }
         Shape::Capsule(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
-        Shape::Capsule(c) if c.a() == c.b() => Other::Ball(point(c.a()), q(c.radius())),
+        Shape::Capsule(c) if c.a() == c.b() => Other::Ball(Box::new(point(c.a())), q(c.radius())),
         Shape::Cylinder(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
         Shape::Cone(c) if c.radius() == 0.0 => segment(c.apex(), c.base()),
         Shape::Capsule(_) | Shape::Cylinder(_) | Shape::Cone(_) => Other::Curved,
@@ -96,7 +96,7 @@ fn other(s: &Shape) -> Other {
 fn collapse(o: Other) -> Other {
     match o {
         Other::Polytope(p) if p.iter().all(|v| *v == p[0]) => {
-            Other::Ball(p[0].clone(), Rational::zero())
+            Other::Ball(Box::new(p[0].clone()), Rational::zero())
         }
         o => o,
     }
