@@ -199,14 +199,16 @@ mod tests {
     #[test]
     fn signs_of_two_roots() {
         let k = Radicands { x: r(2), y: r(3) };
-        // √2 + √3 − √(6) − 1 ≈ 0.6967 > 0
+        // √2 + √3 − √6 − 1 ≈ −0.3032 < 0, and + 0.3033 ≈ 0.0001 > 0.
         let v = Surd {
             p: r(-1),
             q: r(1),
             s: r(1),
             w: r(-1),
         };
-        assert_eq!(v.sign(&k), Ordering::Greater);
+        assert_eq!(v.sign(&k), Ordering::Less);
+        let lifted = &v + &Surd::rational(Rational::new(3033.into(), 10000.into()));
+        assert_eq!(lifted.sign(&k), Ordering::Greater);
         // (√2 − √3)² = 5 − 2√6 exactly: the difference is zero.
         let d = &Surd::root_x(r(1)) - &Surd::root_y(r(1));
         let sq = d.mul(&d, &k);
