@@ -1,8 +1,37 @@
 //! Exact pair tests for every pair with a cylinder or a cone.
+//!
+//! | pair | `intersects` | `within_distance(c)` | method |
+//! |---|---|---|---|
+//! | round – half-space | exact | exact | lowest cap disc or apex along the normal; `a + b√c` signs ([`half_space`]) |
+//! | round – ball (and any point-like shape) | exact | exact | meridian half-plane, signs in `Q(√x, √y)` ([`meridian`]) |
+//! | round – segment, triangle, cuboid, hull | exact | exact for `c = 0` only | cylinder: cap disc against the polytope swept by the axis; cone: central projection from the apex ([`section`]) |
+//! | cylinder – cylinder, parallel axes | exact | exact | interval × disc in a frame along the axis ([`curved`]) |
+//! | round – capsule, cylinder, cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside ([`curved`]) |
+//!
+//! `distance` is certified for the half-space and ball pairs (an `f64` estimate, its bound proved
+//! by the exact `within_distance`, [`distance`]); the other pairs return `UnsupportedPair`.
+//!
+//! Shapes that collapse (a zero radius, a capsule with equal ends, a polytope of one point) are
+//! replaced by the segment or point they are, so more pairs answer exactly.
+
+use ga_core::scalar::Rational;
+use nalgebra::Point3;
+use num_traits::Zero;
 
 use crate::error::Error;
 use crate::query::CertifiedDistance;
 use crate::shape::Shape;
+
+mod curved;
+mod distance;
+mod exact3;
+mod half_space;
+mod meridian;
+mod planar;
+mod section;
+mod surd;
+
+use exact3::{add, point, q, sub, Round, V3};
 
 fn unsupported(query: &'static str, a: &Shape, b: &Shape) -> Error {
     Error::UnsupportedPair {
@@ -12,15 +41,140 @@ fn unsupported(query: &'static str, a: &Shape, b: &Shape) -> Error {
     }
 }
 
+/// The other shape of a pair, in the form the round tests take.
+enum Other {
+    /// The convex hull of exact points (not empty).
+    Polytope(Vec<V3>),
+    /// A ball (radius `0`: a point).
+    Ball(Box<V3>, Rational),
+    HalfSpace(crate::shape::HalfSpace),
+    /// Another curved shape: a cylinder or cone with a positive radius, or a capsule.
+    Curved,
+}
+
+fn segment(a: &Point3<f64>, b: &Point3<f64>) -> Other {
+    Other::Polytope(vec![point(a), point(b)])
+}
+
+fn other(s: &Shape) -> Other {
+    match s {
+        Shape::Ball(b) => Other::Ball(Box::new(point(b.centre())), q(b.radius())),
+        Shape::HalfSpace(h) => Other::HalfSpace(*h),
+        Shape::Segment(s) => segment(s.a(), s.b()),
+        Shape::Triangle(t) => Other::Polytope(t.vertices().iter().map(point).collect()),
+        Shape::ConvexHull(h) => Other::Polytope(h.points().iter().map(point).collect()),
+        Shape::Cuboid(c) => {
+            let centre = point(c.centre());
+            let [u, v, w] = c.half_axes().map(|h| point(&Point3::from(h)));
+            let mut corners = Vec::with_capacity(8);
+            for su in [false, true] {
+                for sv in [false, true] {
+                    for sw in [false, true] {
+                        let mut p = centre.clone();
+                        for (axis, negative) in [(&u, su), (&v, sv), (&w, sw)] {
+                            p = if negative {
+                                sub(&p, axis)
+                            } else {
+                                add(&p, axis)
+                            };
+                        }
+                        corners.push(p);
+                    }
+                }
+            }
+            Other::Polytope(corners)
+        }
+        Shape::Capsule(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
+        Shape::Capsule(c) if c.a() == c.b() => Other::Ball(Box::new(point(c.a())), q(c.radius())),
+        Shape::Cylinder(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
+        Shape::Cone(c) if c.radius() == 0.0 => segment(c.apex(), c.base()),
+        Shape::Capsule(_) | Shape::Cylinder(_) | Shape::Cone(_) => Other::Curved,
+    }
+}
+
+/// A polytope of one point is that point.
+fn collapse(o: Other) -> Other {
+    match o {
+        Other::Polytope(p) if p.iter().all(|v| *v == p[0]) => {
+            Other::Ball(Box::new(p[0].clone()), Rational::zero())
+        }
+        o => o,
+    }
+}
+
+fn round(s: &Shape) -> Option<Round> {
+    match s {
+        Shape::Cylinder(c) => Some(Round::cylinder(c)),
+        Shape::Cone(c) => Some(Round::cone(c)),
+        _ => None,
+    }
+}
+
+/// The exact answer of `within_distance(r, o, e)`, or `None` where it is not available.
+fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
+    match collapse(o) {
+        Other::Ball(centre, radius) => Some(meridian::point_within(r, &centre, &(radius + e))),
+        Other::HalfSpace(h) => Some(half_space::within(r, &h, e)),
+        Other::Polytope(vertices) if e.is_zero() => Some(section::meets_polytope(r, &vertices)),
+        Other::Polytope(_) | Other::Curved => None,
+    }
+}
+
+fn answer(query: &'static str, a: &Shape, b: &Shape, e: &Rational) -> Result<bool, Error> {
+    let found = match (round(a), round(b)) {
+        (Some(ra), _) => decide(&ra, other(b), e).or_else(|| {
+            // The first one may be the simpler side (a zero radius).
+            round(b).and_then(|rb| decide(&rb, other(a), e))
+        }),
+        (None, Some(rb)) => decide(&rb, other(a), e),
+        (None, None) => None,
+    }
+    .or_else(|| curved::within(a, b, e));
+    found.ok_or_else(|| unsupported(query, a, b))
+}
+
 pub(crate) fn intersects(a: &Shape, b: &Shape) -> Result<bool, Error> {
-    Err(unsupported("intersects", a, b))
+    answer("intersects", a, b, &Rational::zero())
 }
 
 pub(crate) fn within_distance(a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
-    let _ = c;
-    Err(unsupported("within_distance", a, b))
+    answer("within_distance", a, b, &q(c))
+}
+
+fn solid(s: &Shape) -> Option<distance::Solid> {
+    match s {
+        Shape::Cylinder(c) => Some(distance::Solid::cylinder(c)),
+        Shape::Cone(c) => Some(distance::Solid::cone(c)),
+        _ => None,
+    }
+}
+
+/// The certified distance with the round shape first, where it is available.
+fn distance_round_first(
+    round: &Shape,
+    other: &Shape,
+    within: impl Fn(f64) -> bool,
+) -> Option<CertifiedDistance> {
+    let s = solid(round)?;
+    match other {
+        Shape::Ball(b) => Some(distance::to_ball(&s, b, within)),
+        Shape::HalfSpace(h) => Some(distance::to_half_space(&s, h, within)),
+        _ => None,
+    }
 }
 
 pub(crate) fn distance(a: &Shape, b: &Shape) -> Result<CertifiedDistance, Error> {
+    // `within_distance` always decides these pairs; `false` is never reached.
+    let within = |c: f64| answer("within_distance", a, b, &q(c)).unwrap_or(false);
+    if let Some(d) = distance_round_first(a, b, within) {
+        return Ok(d);
+    }
+    if let Some(d) = distance_round_first(b, a, within) {
+        return Ok(CertifiedDistance {
+            witness_a: d.witness_b,
+            witness_b: d.witness_a,
+            ..d
+        });
+    }
     Err(unsupported("distance", a, b))
 }

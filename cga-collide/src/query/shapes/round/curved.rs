@@ -1,0 +1,214 @@
+//! Curved against curved: a cylinder or cone against a cylinder, cone or capsule.
+//!
+//! * Parallel cylinders are exact: in a frame along the common axis both are an interval times
+//!   a disc, so they are within `e` iff the axial gap `g` and the gap between the discs `δ`
+//!   satisfy `g² + δ² <= e²`.
+//! * Every other pair is decided by exact certificates, each a rational or `a + b√c` sign:
+//!   apart if the lines of the axes are farther apart than the radii and `e` (every one of these
+//!   solids lies in the infinite cylinder around its axis), or if one solid misses the slab
+//!   between the other's end planes (grown by `e`); meeting if the closest points of the two
+//!   axis lines lie on both axis segments within the sum of the local radii and `e` (the
+//!   segment between them crosses both solids), or if an end point of one lies in the other.
+//!   When no certificate applies the pair is left undecided (`None`), never guessed.
+
+use core::cmp::Ordering;
+
+use ga_core::scalar::Rational;
+use num_traits::{One, Signed, Zero};
+
+use super::exact3::{add, cross, dot, norm2, point, q, scale, sub, Round, V3};
+use super::half_space::{point_within_plane, within_plane};
+use super::meridian;
+use super::surd::sign_root;
+use crate::shape::Shape;
+
+/// What kind of tube around its axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Cylinder,
+    /// Apex at the axis origin, the full radius at its end.
+    Cone,
+    Capsule,
+}
+
+/// A solid in the infinite cylinder of radius `radius` around the line of `origin + t·axis`.
+struct Tube {
+    kind: Kind,
+    origin: V3,
+    axis: V3,
+    radius: Rational,
+    round: Option<Round>,
+}
+
+impl Tube {
+    fn of(s: &Shape) -> Option<Tube> {
+        let (kind, round) = match s {
+            Shape::Cylinder(c) => (Kind::Cylinder, Round::cylinder(c)),
+            Shape::Cone(c) => (Kind::Cone, Round::cone(c)),
+            Shape::Capsule(c) => {
+                let (a, b) = (point(c.a()), point(c.b()));
+                return Some(Tube {
+                    kind: Kind::Capsule,
+                    axis: sub(&b, &a),
+                    origin: a,
+                    radius: q(c.radius()),
+                    round: None,
+                });
+            }
+            _ => return None,
+        };
+        Some(Tube {
+            kind,
+            origin: round.origin.clone(),
+            axis: round.axis.clone(),
+            radius: round.radius.clone(),
+            round: Some(round),
+        })
+    }
+
+    fn end(&self) -> V3 {
+        add(&self.origin, &self.axis)
+    }
+
+    /// The radius of the solid's cross-section at axis parameter `t ∈ [0, 1]`.
+    fn local_radius(&self, t: &Rational) -> Rational {
+        match self.kind {
+            Kind::Cone => &self.radius * t,
+            Kind::Cylinder | Kind::Capsule => self.radius.clone(),
+        }
+    }
+
+    /// Is this solid within `e` of `{x : (x − on)·normal <= 0}`?
+    fn within_plane(&self, on: &V3, normal: &V3, e: &Rational) -> bool {
+        match &self.round {
+            Some(r) => within_plane(r, on, normal, e),
+            None => {
+                let reach = e + &self.radius;
+                point_within_plane(&self.origin, on, normal, &reach)
+                    || point_within_plane(&self.end(), on, normal, &reach)
+            }
+        }
+    }
+
+    /// The two half-spaces whose intersection holds this solid: `(on, outward normal, grown)`,
+    /// the half-space being `{x : (x − on)·normal <= 0}` grown by `grown`.
+    fn slab(&self) -> [(V3, V3, Rational); 2] {
+        let grown = match self.kind {
+            Kind::Capsule => self.radius.clone(),
+            Kind::Cylinder | Kind::Cone => Rational::zero(),
+        };
+        let back = scale(&self.axis, &-Rational::one());
+        [
+            (self.origin.clone(), back, grown.clone()),
+            (self.end(), self.axis.clone(), grown),
+        ]
+    }
+
+    /// Points of the solid with the radius of a ball around each that the solid holds.
+    fn inner_balls(&self) -> Vec<(V3, Rational)> {
+        match self.kind {
+            Kind::Capsule => vec![
+                (self.origin.clone(), self.radius.clone()),
+                (self.end(), self.radius.clone()),
+            ],
+            Kind::Cylinder | Kind::Cone => {
+                vec![
+                    (self.origin.clone(), Rational::zero()),
+                    (self.end(), Rational::zero()),
+                ]
+            }
+        }
+    }
+}
+
+/// Parallel cylinders, exactly.
+fn parallel_cylinders(a: &Tube, b: &Tube, e: &Rational) -> bool {
+    let d = &a.axis;
+    let l = norm2(d);
+    // Axial intervals, in units of d·x.
+    let span = |t: &Tube| {
+        let (u, v) = (dot(&t.origin, d), dot(&t.end(), d));
+        if u <= v {
+            (u, v)
+        } else {
+            (v, u)
+        }
+    };
+    let ((a0, a1), (b0, b1)) = (span(a), span(b));
+    let gap = if b0 > a1 {
+        &b0 - &a1
+    } else if a0 > b1 {
+        &a0 - &b1
+    } else {
+        Rational::zero()
+    };
+    // Squared distance of the lines: X = |w × d|² / L.
+    let x = norm2(&cross(&sub(&b.origin, &a.origin), d)) / &l;
+    let reach = &a.radius + &b.radius;
+    let g2 = &gap * &gap / &l;
+    if x <= &reach * &reach {
+        return g2 <= e * e;
+    }
+    // g² + (√X − R)² <= e², with √X > R.
+    let two = Rational::from_integer(2.into());
+    let rational = &g2 + &x + &reach * &reach - e * e;
+    sign_root(&rational, &-(two * &reach), &x) != Ordering::Greater
+}
+
+/// The certificates of the module documentation; `None` when none applies.
+fn certify(a: &Tube, b: &Tube, e: &Rational) -> Option<bool> {
+    let n = cross(&a.axis, &b.axis);
+    let w = sub(&b.origin, &a.origin);
+    let reach = &a.radius + &b.radius + e;
+    let n2 = norm2(&n);
+    if n2.is_positive() {
+        let wn = dot(&w, &n);
+        if &wn * &wn > &reach * &reach * &n2 {
+            return Some(false);
+        }
+    }
+    for (x, y) in [(a, b), (b, a)] {
+        for (on, normal, grown) in x.slab() {
+            if !y.within_plane(&on, &normal, &(e + grown)) {
+                return Some(false);
+            }
+        }
+    }
+    if n2.is_positive() {
+        let (aa, bb, cc) = (norm2(&a.axis), dot(&a.axis, &b.axis), norm2(&b.axis));
+        let (dd, ff) = (dot(&a.axis, &w), dot(&b.axis, &w));
+        let ta = (&cc * &dd - &bb * &ff) / &n2;
+        let tb = (&bb * &dd - &aa * &ff) / &n2;
+        let unit = |t: &Rational| !t.is_negative() && *t <= Rational::one();
+        if unit(&ta) && unit(&tb) {
+            let gap = sub(&add(&w, &scale(&b.axis, &tb)), &scale(&a.axis, &ta));
+            let local = a.local_radius(&ta) + b.local_radius(&tb) + e;
+            if norm2(&gap) <= &local * &local {
+                return Some(true);
+            }
+        }
+    }
+    for (x, y) in [(a, b), (b, a)] {
+        if let Some(r) = &x.round {
+            for (centre, radius) in y.inner_balls() {
+                if meridian::point_within(r, &centre, &(radius + e)) {
+                    return Some(true);
+                }
+            }
+        }
+    }
+    None
+}
+
+/// Exact: is `a` within `e` of `b` (each a cylinder, cone or capsule, at least one not a
+/// capsule)? `None` when no exact method applies yet.
+pub(crate) fn within(a: &Shape, b: &Shape, e: &Rational) -> Option<bool> {
+    let (ta, tb) = (Tube::of(a)?, Tube::of(b)?);
+    if ta.kind == Kind::Cylinder
+        && tb.kind == Kind::Cylinder
+        && norm2(&cross(&ta.axis, &tb.axis)).is_zero()
+    {
+        return Some(parallel_cylinders(&ta, &tb, e));
+    }
+    certify(&ta, &tb, e)
+}
