@@ -37,6 +37,7 @@
 //! | which pairs of objects touch? | [`Scene::colliding_pairs`] |
 //! | what touches this object? | [`Scene::colliding_with`] |
 //! | what would an outside collider at a pose touch? | [`Scene::colliding_at`] |
+//! | what would an outside shape at a pose touch? | [`Scene::colliding_at_shape`] |
 //! | which pairs are within distance `c`? (exact, closed) | [`Scene::pairs_within_distance`] |
 //! | which pair is nearest, and how far apart? | [`Scene::nearest_pair`] |
 //! | what is nearest to this object? | [`Scene::nearest_to`] |
