@@ -142,7 +142,10 @@ fn a_shape_inside_a_closed_mesh_meets_no_triangle_but_the_solid() {
     assert!(cube.intersects_shape_solid(&inside).unwrap());
     // The cube inside a large ball: the solid ball holds every triangle.
     let around: Shape = Ball::new(Point3::new(0.5, 0.5, 0.5), 10.0).unwrap().into();
-    assert_eq!(cube.shape_hits(&around).unwrap(), (0..12).collect::<Vec<u32>>());
+    assert_eq!(
+        cube.shape_hits(&around).unwrap(),
+        (0..12).collect::<Vec<u32>>()
+    );
     assert!(cube.intersects_shape_solid(&around).unwrap());
     let apart: Shape = Ball::new(Point3::new(3.0, 0.5, 0.5), 1.0).unwrap().into();
     assert!(!cube.intersects_shape_solid(&apart).unwrap());
@@ -154,7 +157,6 @@ fn a_shape_inside_a_closed_mesh_meets_no_triangle_but_the_solid() {
 /// every node aside, so no triangle test is asked (a test asked here would be refused).
 #[test]
 fn far_shapes_prune_the_whole_tree() {
-    let cube = unit_cube();
     let above = HalfSpace::new(Point3::new(0.0, 0.0, 2.0), -Vector3::z()).unwrap();
     let tilted =
         HalfSpace::new(Point3::new(-1.0, -1.0, -1.0), Vector3::new(1.0, 1.0, 1.0)).unwrap();
@@ -174,7 +176,6 @@ fn far_shapes_prune_the_whole_tree() {
             assert!(!c.intersects_shape_at(&id, &shape, &id).unwrap());
         }
     }
-    let _ = cube;
 }
 
 #[test]

@@ -49,7 +49,7 @@ pub fn parse_shape(value: &Value) -> Result<Shape> {
             )
         })?;
     let (kind, body) = object.iter().next().context("one key")?;
-    let Some((_, fields)) = KINDS.iter().find(|(k, _)| k == kind) else {
+    let Some((_, fields)) = KINDS.iter().find(|(k, _)| *k == kind.as_str()) else {
         bail!("unknown shape kind `{kind}` (expected one of {})", kinds());
     };
     let body = body
@@ -61,13 +61,12 @@ pub fn parse_shape(value: &Value) -> Result<Shape> {
             fields.join(", ")
         );
     }
-    let shape = build(kind, body).with_context(|| format!("{kind}"))?;
-    Ok(shape)
+    build(kind, body).with_context(|| kind.clone())
 }
 
 fn build(kind: &str, body: &Map<String, Value>) -> Result<Shape> {
-    let point = |name: &str| field(body, name).and_then(|v| point(v).context(name.to_owned()));
-    let number = |name: &str| field(body, name).and_then(|v| number(v).context(name.to_owned()));
+    let point_at = |name: &str| field(body, name).and_then(|v| point(v).context(name.to_owned()));
+    let number_at = |name: &str| field(body, name).and_then(|v| number(v).context(name.to_owned()));
     let points = |name: &str| -> Result<Vec<Point3<f64>>> {
         let list = field(body, name)?
             .as_array()
@@ -78,10 +77,10 @@ fn build(kind: &str, body: &Map<String, Value>) -> Result<Shape> {
             .collect()
     };
     Ok(match kind {
-        "ball" => Ball::new(point("center")?, number("radius")?)?.into(),
-        "capsule" => Capsule::new(point("a")?, point("b")?, number("radius")?)?.into(),
-        "cylinder" => Cylinder::new(point("a")?, point("b")?, number("radius")?)?.into(),
-        "cone" => Cone::new(point("apex")?, point("base")?, number("radius")?)?.into(),
+        "ball" => Ball::new(point_at("center")?, number_at("radius")?)?.into(),
+        "capsule" => Capsule::new(point_at("a")?, point_at("b")?, number_at("radius")?)?.into(),
+        "cylinder" => Cylinder::new(point_at("a")?, point_at("b")?, number_at("radius")?)?.into(),
+        "cone" => Cone::new(point_at("apex")?, point_at("base")?, number_at("radius")?)?.into(),
         "cuboid" => {
             let axes = points("half_axes")?;
             let [u, v, w] = axes[..] else {
@@ -90,9 +89,9 @@ fn build(kind: &str, body: &Map<String, Value>) -> Result<Shape> {
                     axes.len()
                 );
             };
-            Cuboid::new(point("center")?, [u.coords, v.coords, w.coords])?.into()
+            Cuboid::new(point_at("center")?, [u.coords, v.coords, w.coords])?.into()
         }
-        "halfspace" => HalfSpace::new(point("point")?, point("normal")?.coords)?.into(),
+        "halfspace" => HalfSpace::new(point_at("point")?, point_at("normal")?.coords)?.into(),
         "convex" => ConvexHull::new(points("points")?)?.into(),
         "triangle" => {
             let p = points("points")?;

@@ -138,7 +138,7 @@ fn half_space_gap(h: &HalfSpace, b: &Aabb) -> f64 {
     // Every rounding above is within a few ulps of `magnitude`; an underflowed product within
     // 2^-1074 each.
     let certain = value - (magnitude * 1e-12 + 1e-300);
-    if !(certain > 0.0) || !certain.is_finite() {
+    if !(certain > 0.0 && certain.is_finite()) {
         return 0.0;
     }
     // |n/m| lies in [1, sqrt(3)]: divided by an upper bound of it and rounded down.

@@ -2,7 +2,7 @@
 //! (`intersects_<a>_<b>`, `within_distance_<a>_<b>`, `distance_<a>_<b>`), one per unordered
 //! pair, in the order segment, triangle, ball, cuboid, capsule, cylinder, cone, half-space,
 //! convex hull (`intersects_ball_cuboid`, `distance_cuboid_capsule`). Each is the generic
-//! query ([`intersects`](super::intersects) and the rest) on that pair, with the same answer.
+//! query ([`intersects`](crate::query::intersects) and the rest) on that pair, with the same answer.
 //!
 //! Signatures: a pair of two kinds whose constructors check every value against
 //! [`MAX_MAGNITUDE`](crate::shape::MAX_MAGNITUDE) (cuboid, capsule, half-space, convex hull)
@@ -40,29 +40,29 @@ macro_rules! pairs {
         $(pairs!(@$arm $a, $b, $intersects, $within, $distance);)*
     };
     (@checked $a:ident, $b:ident, $intersects:ident, $within:ident, $distance:ident) => {
-        #[doc = concat!("Exact: does the `", stringify!($a), "` meet the `", stringify!($b), "`? ([`intersects`](super::intersects) on the pair)")]
+        #[doc = concat!("Exact: does the `", stringify!($a), "` meet the `", stringify!($b), "`? ([`intersects`](crate::query::intersects) on the pair)")]
         pub fn $intersects(a: &$a, b: &$b) -> bool {
             polytopal::intersects(&Shape::from(a.clone()), &Shape::from(b.clone()))
         }
         pairs!(@within $a, $b, $within);
-        #[doc = concat!("The certified distance between the `", stringify!($a), "` and the `", stringify!($b), "` ([`distance`](super::distance) on the pair).")]
+        #[doc = concat!("The certified distance between the `", stringify!($a), "` and the `", stringify!($b), "` ([`distance`](crate::query::distance) on the pair).")]
         pub fn $distance(a: &$a, b: &$b) -> CertifiedDistance {
             polytopal::distance(&Shape::from(a.clone()), &Shape::from(b.clone()))
         }
     };
     (@fallible $a:ident, $b:ident, $intersects:ident, $within:ident, $distance:ident) => {
-        #[doc = concat!("Exact: does the `", stringify!($a), "` meet the `", stringify!($b), "`? ([`intersects`](super::intersects) on the pair)")]
+        #[doc = concat!("Exact: does the `", stringify!($a), "` meet the `", stringify!($b), "`? ([`intersects`](crate::query::intersects) on the pair)")]
         pub fn $intersects(a: &$a, b: &$b) -> Result<bool, Error> {
             intersects(&Shape::from(a.clone()), &Shape::from(b.clone()))
         }
         pairs!(@within $a, $b, $within);
-        #[doc = concat!("The certified distance between the `", stringify!($a), "` and the `", stringify!($b), "` ([`distance`](super::distance) on the pair).")]
+        #[doc = concat!("The certified distance between the `", stringify!($a), "` and the `", stringify!($b), "` ([`distance`](crate::query::distance) on the pair).")]
         pub fn $distance(a: &$a, b: &$b) -> Result<CertifiedDistance, Error> {
             distance(&Shape::from(a.clone()), &Shape::from(b.clone()))
         }
     };
     (@within $a:ident, $b:ident, $within:ident) => {
-        #[doc = concat!("Exact: is the `", stringify!($a), "` within distance `c` of the `", stringify!($b), "`? ([`within_distance`](super::within_distance) on the pair)")]
+        #[doc = concat!("Exact: is the `", stringify!($a), "` within distance `c` of the `", stringify!($b), "`? ([`within_distance`](crate::query::within_distance) on the pair)")]
         pub fn $within(a: &$a, b: &$b, c: f64) -> Result<bool, Error> {
             within_distance(&Shape::from(a.clone()), &Shape::from(b.clone()), c)
         }
