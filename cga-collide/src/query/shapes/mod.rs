@@ -30,7 +30,7 @@ fn is_round(s: &Shape) -> bool {
 }
 
 pub(crate) fn check_clearance(c: f64) -> Result<(), Error> {
-    if c.is_finite() && c >= 0.0 && c <= crate::shape::MAX_MAGNITUDE {
+    if (0.0..=crate::shape::MAX_MAGNITUDE).contains(&c) {
         Ok(())
     } else {
         Err(Error::InvalidClearance { value: c })
