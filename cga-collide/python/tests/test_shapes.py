@@ -7,13 +7,16 @@ answers it with a ``CgaError`` saying "no exact ... test", or (while an engine i
 a Rust panic "not implemented"; the skip message names the pair."""
 
 import itertools
+import json
 import pickle
+import subprocess
 
 import numpy as np
 import pytest
 
 import cga_collide as cc
-from conftest import random_poses, translation
+from conftest import REPO, random_poses, translation
+from test_rust_agreement import cga_binary
 
 # ---------------------------------------------------------------------------------- helpers
 
@@ -291,6 +294,59 @@ def test_ball_segment_triangle_pairs_equal_the_colliders_answers(seed):
         assert abs(d.distance - dm.distance) <= d.error_bound + dm.error_bound
         for c in (0.0, 0.1, 0.5):
             assert cc.within_distance(tri, cc.Triangle(*u), c) == mesh.within_distance(other, c)
+
+
+def as_json(s):
+    """A shape as the ``cga shapes`` command line reads it."""
+    p = lambda x: [float(v) for v in x]  # noqa: E731
+    if isinstance(s, cc.Ball):
+        return {"ball": {"center": p(s.centre), "radius": s.radius}}
+    if isinstance(s, cc.Cuboid):
+        return {"cuboid": {"center": p(s.centre), "half_axes": [p(h) for h in s.half_axes]}}
+    if isinstance(s, (cc.Capsule, cc.Cylinder)):
+        return {s.kind: {"a": p(s.a), "b": p(s.b), "radius": s.radius}}
+    if isinstance(s, cc.Cone):
+        return {"cone": {"apex": p(s.apex), "base": p(s.base), "radius": s.radius}}
+    if isinstance(s, cc.HalfSpace):
+        return {"halfspace": {"point": p(s.point), "normal": p(s.normal)}}
+    if isinstance(s, cc.ConvexHull):
+        return {"convex": {"points": [p(x) for x in s.points]}}
+    if isinstance(s, cc.Triangle):
+        return {"triangle": {"points": [p(x) for x in s.vertices]}}
+    return {"segment": {"points": [p(s.a), p(s.b)]}}
+
+
+def test_answers_equal_the_command_lines(tmp_path):
+    """``cga shapes`` (the Rust answers, from the workspace's release build) on the same pairs:
+    every kind against every kind where the library answers, and random ball, segment and
+    triangle pairs near contact. Skipped without a ``cga`` binary that has ``shapes``."""
+    binary = cga_binary()
+    if binary is None or subprocess.run([binary, "shapes", "--help"], capture_output=True).returncode:
+        pytest.skip("no cga binary with `cga shapes` (cargo build --release -p cga-cli, or set CGA_BIN)")
+    rng = np.random.default_rng(7)
+    pairs = []
+    for a, b in itertools.product(one_of_each().values(), repeat=2):
+        for pose in (np.eye(4), translation(1.0, 0.25), translation(10.0)):
+            pairs.append((a, b.placed(pose)))
+    for _ in range(200):
+        t, u = random_triangle(rng, 0.5), random_triangle(rng, 0.5)
+        c, r = rng.uniform(-1, 1, size=3), float(rng.uniform(0, 0.5))
+        pairs += [(cc.Triangle(*t), cc.Triangle(*u)), (cc.Ball(c, r), cc.Triangle(*t)),
+                  (cc.Segment(t[0], u[1]), cc.Triangle(*u)), (cc.Ball(c, r), cc.Segment(*t[:2]))]
+    want, lines = [], []
+    for a, b in pairs:
+        try:
+            want.append(answer(cc.intersects, a, b))
+        except pytest.skip.Exception:
+            continue  # the engine is not merged: the command line has no answer either
+        lines.append(json.dumps({"a": as_json(a), "b": as_json(b)}))
+    path = tmp_path / "pairs.jsonl"
+    path.write_text("\n".join(lines) + "\n")
+    out = subprocess.run([binary, "shapes", str(path), "--json"], capture_output=True, text=True, cwd=REPO)
+    assert out.returncode == 0, out.stderr
+    rust = json.loads(out.stdout.splitlines()[0])
+    assert rust["pairs"] == len(want)
+    assert rust["answers"] == want
 
 
 # ---------------------------------------------------------------------------------- every kind
