@@ -4,7 +4,7 @@
 //! Arrays come in as anything numpy reads as numbers that float64 holds exactly (never a
 //! rounding cast) and go out as numpy arrays; shapes are checked; every refused input and
 //! every library error is a `CgaError` (a `ValueError`) naming the argument; the GIL is
-//! released while Rust works.
+//! released while Rust works (but for single shape-pair questions, shorter than releasing it).
 
 mod answers;
 mod collider;

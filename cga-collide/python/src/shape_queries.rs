@@ -28,13 +28,24 @@ fn shape<'a>(obj: &'a Arg<'_>, name: &str) -> PyResult<&'a Shape> {
     }
 }
 
-/// A question about `a` and `b`, asked with the GIL released.
+/// Whether a question about `a` and `b` may take long enough to release the GIL for: a hull's
+/// cost grows with its points, while every other pair is answered in about the time that
+/// releasing and taking back the GIL costs (a microsecond or less).
+fn long(a: &Shape, b: &Shape) -> bool {
+    matches!(a, Shape::ConvexHull(_)) || matches!(b, Shape::ConvexHull(_))
+}
+
+/// A question about `a` and `b` (with the GIL released if it may take long).
 fn pair<T: Send>(
     py: Python<'_>, a: &Arg<'_>, b: &Arg<'_>,
     q: impl FnOnce(&Shape, &Shape) -> Result<T, Error> + Send,
 ) -> PyResult<T> {
     let (a, b) = (shape(a, "a")?, shape(b, "b")?);
-    py.detach(|| q(a, b)).map_err(err)
+    if long(a, b) {
+        py.detach(|| q(a, b)).map_err(err)
+    } else {
+        q(a, b).map_err(err)
+    }
 }
 
 /// A question about `a` at `pose_a` and `b` at `pose_b`.
@@ -44,7 +55,11 @@ fn at<T: Send>(
 ) -> PyResult<T> {
     let (a, b) = (shape(a, "a")?, shape(b, "b")?);
     let (pa, pb) = (convert::pose(pose_a, "pose_a")?, convert::pose(pose_b, "pose_b")?);
-    py.detach(|| q(a, &pa, b, &pb)).map_err(err)
+    if long(a, b) {
+        py.detach(|| q(a, &pa, b, &pb)).map_err(err)
+    } else {
+        q(a, &pa, b, &pb).map_err(err)
+    }
 }
 
 /// A question for every pose pair of `poses_a` and `poses_b`; the first refused pose pair is
