@@ -238,6 +238,20 @@ pub enum Error {
         generation: u32,
     },
 
+    /// A scene object was asked for as the other kind: a mesh collider where it holds a
+    /// solid primitive, or the reverse.
+    #[error("scene object {index} is a {found}, not a {expected}: ask Scene::kind first, or use Scene::{accessor}")]
+    WrongObjectKind {
+        /// The handle's slot.
+        index: u32,
+        /// What the call needs (`"mesh"` or `"shape"`).
+        expected: &'static str,
+        /// What the object is (`"mesh"`, or the shape's kind such as `"ball"`).
+        found: &'static str,
+        /// The call that takes this object.
+        accessor: &'static str,
+    },
+
     // ------------------------------------------------------------ convex polyhedra
     /// [`ConvexPolyhedron::new`](crate::shape::polyhedron::ConvexPolyhedron::new) was given
     /// fewer than 4 vertices or 4 faces.

@@ -56,3 +56,25 @@ pub(crate) fn threads() -> usize {
         1
     }
 }
+
+/// Answers `query` for every item of a batch, spread over the cores; the first refused item
+/// (in slice order) is reported as [`Error::InBatch`] with its index, whatever order the
+/// threads finish in.
+pub(crate) fn over_batch<I: Sync, T: Send>(
+    items: &[I],
+    query: impl Fn(&I) -> Result<T, crate::error::Error> + Sync,
+) -> Result<Vec<T>, crate::error::Error> {
+    // Collecting the parallel results straight into a `Result` would report whichever error a
+    // thread met first; gathering them in slice order first keeps the first refused item.
+    let answers: Vec<Result<T, crate::error::Error>> = items.par_iter().map(&query).collect();
+    answers
+        .into_iter()
+        .enumerate()
+        .map(|(index, answer)| {
+            answer.map_err(|source| crate::error::Error::InBatch {
+                index,
+                source: Box::new(source),
+            })
+        })
+        .collect()
+}

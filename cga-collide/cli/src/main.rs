@@ -18,6 +18,8 @@ mod query;
 mod render;
 mod scene;
 mod self_intersect;
+mod shape_json;
+mod shapes;
 mod spheretree;
 mod tree_file;
 
@@ -53,6 +55,9 @@ enum Command {
     Ccd(ccd::CcdArgs),
     /// Many objects from a scene file: every pair that touches, or within a clearance (exact).
     Scene(scene::SceneArgs),
+    /// Exact intersection tests of solid primitives (boxes, capsules, cylinders, cones,
+    /// half-spaces, convex hulls, balls, triangles, segments), one pair a JSON line.
+    Shapes(shapes::ShapesArgs),
 }
 
 fn run(command: Command) -> Result<()> {
@@ -64,6 +69,7 @@ fn run(command: Command) -> Result<()> {
         Command::Spheretree(args) => spheretree::run(args),
         Command::Distance(args) => distance::run(args),
         Command::SelfIntersect(args) => self_intersect::run(args),
+        Command::Shapes(args) => shapes::run(args),
     }
 }
 

@@ -7,6 +7,11 @@
 //! the Python binding applies to 4×4 poses). `#` starts a comment; blank lines are skipped. A
 //! mesh named on several lines is loaded and built once and placed many times. Objects are
 //! numbered from 0 in line order. Every error about a line names the file and the line.
+//!
+//! A line may name a solid primitive instead of a mesh: a SHAPE in the JSON spelling of
+//! `cga shapes` ([`crate::shape_json`]), e.g. `{"halfspace": {"point": [0, 0, 0], "normal":
+//! [0, 0, 1]}}`, followed by the same 6 or 12 numbers, or by none (the shape as written, in
+//! world coordinates). It is placed by the library's placement rule (`Shape::placed`).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -17,6 +22,7 @@ use anyhow::{bail, Context, Result};
 use cga_collide::collider::{pose_from_degrees, pose_from_matrix, Collider};
 use cga_collide::nalgebra::{Isometry3, Matrix3, Point3};
 use cga_collide::scene::{ObjectId, Scene};
+use cga_collide::shape::Shape;
 use cga_collide::Segment;
 use clap::Args;
 use serde_json::json;
@@ -24,13 +30,16 @@ use serde_json::json;
 use crate::args::parse_numbers;
 use crate::mesh::load_mesh;
 use crate::number;
+use crate::shape_json::parse_shape;
 
 /// Every pair of objects of a scene file that touch (exact), or are within a clearance, or the
 /// nearest pair; the objects a segment hits, in order.
 #[derive(Args, Debug)]
+#[command(after_long_help = SCENE_HELP)]
 pub struct SceneArgs {
     /// The scene file: one object a line, `MESH rx ry rz tx ty tz` or `MESH` and a row-major
-    /// 3×4 `[R | t]` (12 numbers); `#` comments.
+    /// 3×4 `[R | t]` (12 numbers), or a SHAPE (JSON, see below) and the same numbers or none;
+    /// `#` comments.
     file: PathBuf,
     /// List the pairs within this distance (exact, closed) instead of the touching ones.
     #[arg(long, value_name = "C")]
@@ -63,9 +72,36 @@ pub struct SceneArgs {
     json: bool,
 }
 
+/// A scene file's objects may also be solid primitives: the help's appendix.
+const SCENE_HELP: &str = concat!(
+    "A scene line may name a solid primitive instead of a mesh: a SHAPE, then 6 or 12 numbers \
+     as for a mesh, or none (the shape as written). For example\n  \
+     {\"halfspace\": {\"point\": [0, 0, 0], \"normal\": [0, 0, 1]}}\n  \
+     {\"ball\": {\"center\": [0, 0, 0], \"radius\": 0.5}} 0 0 0 1 2 3\n\n",
+    "SHAPE is a JSON object with one key, the kind (as `cga shapes` reads it):\n  \
+     {\"ball\": {\"center\": P, \"radius\": r}}\n  \
+     {\"capsule\": {\"a\": P, \"b\": P, \"radius\": r}}\n  \
+     {\"cylinder\": {\"a\": P, \"b\": P, \"radius\": r}}\n  \
+     {\"cone\": {\"apex\": P, \"base\": P, \"radius\": r}}\n  \
+     {\"cuboid\": {\"center\": P, \"half_axes\": [U, V, W]}}\n  \
+     {\"halfspace\": {\"point\": P, \"normal\": N}}\n  \
+     {\"convex\": {\"points\": [P, ...]}}\n  \
+     {\"triangle\": {\"points\": [P, P, P]}}\n  \
+     {\"segment\": {\"points\": [P, P]}}\n\
+     P, N, U, V, W are [x, y, z]; see `cga shapes --help`."
+);
+
+/// What a line of a scene file places.
+enum Source {
+    /// A mesh path or built-in name.
+    Mesh(String),
+    /// A solid primitive.
+    Shape(Shape),
+}
+
 /// One line of a scene file.
 struct Line {
-    mesh: String,
+    source: Source,
     pose: Isometry3<f64>,
     /// `FILE:LINE`, for errors about this object.
     at: String,
@@ -83,9 +119,21 @@ fn read(path: &Path) -> Result<Vec<Line>> {
             continue;
         }
         let at = format!("{name}:{}", k + 1);
-        let mut words = line.split_whitespace();
-        let mesh = words.next().unwrap_or_default().to_string();
-        let numbers = words
+        let (source, rest) = if line.starts_with('{') {
+            let mut values =
+                serde_json::Deserializer::from_str(line).into_iter::<serde_json::Value>();
+            let value = values
+                .next()
+                .with_context(|| format!("{at}: expected a SHAPE (JSON)"))?
+                .with_context(|| format!("{at}: the SHAPE is not valid JSON"))?;
+            let shape = parse_shape(&value).with_context(|| at.clone())?;
+            (Source::Shape(shape), &line[values.byte_offset()..])
+        } else {
+            let mesh = line.split_whitespace().next().unwrap_or_default();
+            (Source::Mesh(mesh.to_string()), &line[mesh.len()..])
+        };
+        let numbers = rest
+            .split_whitespace()
             .map(|w| {
                 w.parse::<f64>()
                     .ok()
@@ -94,6 +142,7 @@ fn read(path: &Path) -> Result<Vec<Line>> {
             })
             .collect::<Result<Vec<f64>>>()?;
         let pose = match numbers.len() {
+            0 if matches!(source, Source::Shape(_)) => Isometry3::identity(),
             6 => pose_from_degrees(
                 [numbers[0], numbers[1], numbers[2]],
                 [numbers[3], numbers[4], numbers[5]],
@@ -110,7 +159,7 @@ fn read(path: &Path) -> Result<Vec<Line>> {
                  row-major 3x4 [R | t]), found {n} numbers"
             ),
         };
-        out.push(Line { mesh, pose, at });
+        out.push(Line { source, pose, at });
     }
     Ok(out)
 }
@@ -120,15 +169,18 @@ fn read(path: &Path) -> Result<Vec<Line>> {
 fn colliders(lines: &[Line], dir: &Path) -> Result<HashMap<String, Arc<Collider>>> {
     let mut out = HashMap::new();
     for line in lines {
-        if !out.contains_key(&line.mesh) {
-            let relative = dir.join(&line.mesh);
+        let Source::Mesh(name) = &line.source else {
+            continue;
+        };
+        if !out.contains_key(name) {
+            let relative = dir.join(name);
             let spec = if relative.exists() {
                 relative.display().to_string()
             } else {
-                line.mesh.clone()
+                name.clone()
             };
             let mesh = load_mesh(&spec, "").with_context(|| line.at.clone())?;
-            out.insert(line.mesh.clone(), Arc::new(Collider::new(mesh)));
+            out.insert(name.clone(), Arc::new(Collider::new(mesh)));
         }
     }
     Ok(out)
@@ -172,9 +224,11 @@ pub fn run(args: SceneArgs) -> Result<()> {
         let mut scene = Scene::new();
         scene.set_solid(args.solid);
         for (k, line) in lines.iter().enumerate() {
-            scene
-                .add(built[&line.mesh].clone(), line.pose)
-                .with_context(|| format!("{}: object {k}", args.file.display()))?;
+            match &line.source {
+                Source::Mesh(name) => scene.add(built[name].clone(), line.pose),
+                Source::Shape(shape) => scene.add_shape(shape.clone(), line.pose),
+            }
+            .with_context(|| format!("{}: object {k}", line.at))?;
         }
         Ok(scene)
     })?;
@@ -191,6 +245,7 @@ pub fn run(args: SceneArgs) -> Result<()> {
     let mut value = json!({
         "objects": lines.len(),
         "meshes": built.len(),
+        "shapes": lines.iter().filter(|l| matches!(l.source, Source::Shape(_))).count(),
         "pairs": index_pairs(&pairs),
         "millis_colliders": millis_colliders,
         "millis_build": millis(millis_build),
@@ -267,8 +322,12 @@ fn print_text(args: &SceneArgs, value: &serde_json::Value) {
         list.len()
     };
     let count = value["pairs"].as_array().map_or(0, Vec::len);
+    let shapes = match value["shapes"].as_u64() {
+        Some(n) if n > 0 => format!(", {n} shapes"),
+        _ => String::new(),
+    };
     println!(
-        "{}: {} objects ({} meshes), {count} pairs {what} (exact; build {:.2} ms, query {:.2} ms)",
+        "{}: {} objects ({} meshes{shapes}), {count} pairs {what} (exact; build {:.2} ms, query {:.2} ms)",
         args.file.display(),
         value["objects"],
         value["meshes"],

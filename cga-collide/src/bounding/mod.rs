@@ -10,6 +10,7 @@
 //! | `pose_tree` | the same tree laid out for queries under poses (centre and half-extents per node, vertices in leaf order) |
 //! | `oriented_boxes` | boxes fitted to each node's geometry, with a proved lower bound on the distance of two of them under a relative pose |
 //! | `pose_bounds` | a rigid pose analysed once: its rounded matrix and the proved bounds on the rounding of `pose * v` |
+//! | `shape_box` | where a solid primitive may reach: its outward-rounded box, or a half-space itself, and a lower bound on a box's distance to it |
 //! | `placed_leaves` | per-thread scratch memory holding the leaves placed by a pose during one traversal |
 //!
 //! Every test here is conservative: it may let through a candidate that does not meet, never
@@ -24,6 +25,7 @@ pub(crate) mod oriented_boxes;
 pub(crate) mod placed_leaves;
 pub(crate) mod pose_bounds;
 pub(crate) mod pose_tree;
+pub(crate) mod shape_box;
 
 pub use aabb::{triangle_box, Aabb};
 pub(crate) use box_distance::{box_distance2, boxes_within};

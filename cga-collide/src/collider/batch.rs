@@ -20,28 +20,14 @@
 
 use crate::collider::{Collider, PosePair};
 use crate::error::Error;
-use crate::parallel::*;
+use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
 
-/// Answers `query` for every pose pair, spread over the cores; the first refused pose (in
-/// slice order) is reported with its index, whatever order the threads finish in.
 fn over_poses<T: Send>(
     poses: &[PosePair],
     query: impl Fn(&PosePair) -> Result<T, Error> + Sync,
 ) -> Result<Vec<T>, Error> {
-    // Collecting the parallel results straight into a `Result` would report whichever error a
-    // thread met first; gathering them in slice order first keeps the first refused pose.
-    let answers: Vec<Result<T, Error>> = poses.par_iter().map(&query).collect();
-    answers
-        .into_iter()
-        .enumerate()
-        .map(|(index, answer)| {
-            answer.map_err(|source| Error::InBatch {
-                index,
-                source: Box::new(source),
-            })
-        })
-        .collect()
+    over_batch(poses, query)
 }
 
 impl Collider {

@@ -20,6 +20,7 @@
 //! | which triangle pairs intersect? | [`intersecting_pairs`](Collider::intersecting_pairs) | [`intersecting_pairs_at`](Collider::intersecting_pairs_at) | [`intersecting_pairs_batch`](Collider::intersecting_pairs_batch) |
 //! | do the solids overlap (one may be inside)? | [`collides_solid`](Collider::collides_solid) | [`collides_solid_at`](Collider::collides_solid_at) | [`collides_solid_batch`](Collider::collides_solid_batch) |
 //! | which triangles does a shape meet? | [`segment_hits`](Collider::segment_hits), `triangle_hits`, `sphere_hits`, `ball_hits`, `spheres_hits` | [`segment_hits_at`](Collider::segment_hits_at), ... | |
+//! | a solid primitive ([`Shape`](crate::shape::Shape)) against the mesh | [`shape_hits`](Collider::shape_hits), [`intersects_shape`](Collider::intersects_shape), [`intersects_shape_solid`](Collider::intersects_shape_solid), [`shape_within_distance`](Collider::shape_within_distance), [`distance_to_shape`](Collider::distance_to_shape) | [`shape_hits_at`](Collider::shape_hits_at), [`intersects_shape_at`](Collider::intersects_shape_at), ... | |
 //! | within distance `c`? (exact, closed) | [`within_distance`](Collider::within_distance) | [`within_distance_at`](Collider::within_distance_at) | [`within_distance_batch`](Collider::within_distance_batch) |
 //! | which pairs within `c`? | [`pairs_within_distance`](Collider::pairs_within_distance) | [`pairs_within_distance_at`](Collider::pairs_within_distance_at) | |
 //! | how far apart? ([`CertifiedDistance`](crate::query::CertifiedDistance)) | [`distance`](Collider::distance), [`exact_distance`](Collider::exact_distance) | [`distance_at`](Collider::distance_at) | [`distance_batch`](Collider::distance_batch) |
@@ -65,6 +66,7 @@ mod pose;
 pub(crate) mod poses;
 mod self_intersection;
 mod serial;
+mod shapes;
 
 pub use contacts::{ContactClass, Contacts};
 pub use pose::{pose_from_degrees, pose_from_matrix, PosePair, ROTATION_TOLERANCE};

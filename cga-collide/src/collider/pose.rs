@@ -7,22 +7,7 @@
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 use crate::error::Error;
-
-/// The poses of the two meshes of one query.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PosePair {
-    /// Pose of the first mesh (`self` of the query).
-    pub a: Isometry3<f64>,
-    /// Pose of the second mesh.
-    pub b: Isometry3<f64>,
-}
-
-impl PosePair {
-    /// The pair of poses.
-    pub fn new(a: Isometry3<f64>, b: Isometry3<f64>) -> PosePair {
-        PosePair { a, b }
-    }
-}
+pub use crate::shape::PosePair;
 
 /// The rigid motion that rotates by `degrees[0]` about the x axis, then by `degrees[1]` about
 /// the y axis, then by `degrees[2]` about the z axis (fixed axes, right-handed, counter-clockwise

@@ -587,7 +587,7 @@ impl Collider {
         Ok(self.world_boxes(pose)?.world(&self.bvh().bounds()))
     }
 
-    fn world_boxes(&self, pose: &Isometry3<f64>) -> Result<WorldBoxes, Error> {
+    pub(super) fn world_boxes(&self, pose: &Isometry3<f64>) -> Result<WorldBoxes, Error> {
         let map = PoseMap::new(pose)?;
         map.check_range(self.extent())?;
         Ok(WorldBoxes::new(&map, self.extent()))
@@ -629,7 +629,7 @@ impl Collider {
 
     /// Calls `visit` with every placed triangle whose (exact, placed) box passes `test`,
     /// reached through nodes whose conservative world boxes pass `test`.
-    fn posed_candidates<B>(
+    pub(super) fn posed_candidates<B>(
         &self,
         world: &WorldBoxes,
         pose: &Isometry3<f64>,

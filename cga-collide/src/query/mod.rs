@@ -14,6 +14,14 @@
 //! * [`segment_triangle_entry`]: the exact parameter at which a segment first meets a triangle
 //!   (the first hit of a segment cast).
 //!
+//! * The solid primitives ([`Shape`](crate::shape::Shape): cuboids, capsules, cylinders,
+//!   cones, half-spaces, convex hulls, with balls, triangles and segments) go through one
+//!   generic entry point: [`intersects`], [`within_distance`], [`distance`], their `_at` forms
+//!   under poses and `_batch` forms over many [`PosePair`](crate::shape::PosePair)s; the pair
+//!   functions of the naming rule exist for every pair of them too
+//!   (`intersects_cuboid_capsule`, `distance_ball_cylinder`, ...; see each for its
+//!   signature).
+//!
 //! Each test takes one shape of each kind; the questions about whole meshes are built on them,
 //! over box trees of the triangles.
 //! Every exact answer is the true answer for the real numbers the `f64` inputs denote; the
@@ -47,8 +55,10 @@ pub use intersects::{
     intersects_triangle_triangle, Intersects,
 };
 pub use segment_entry::segment_triangle_entry;
+pub use shapes::named::*;
 pub use shapes::{
-    distance, distance_at, intersects, intersects_at, within_distance, within_distance_at,
+    distance, distance_at, distance_batch, intersects, intersects_at, intersects_batch,
+    within_distance, within_distance_at, within_distance_batch,
 };
 pub use within_distance::{
     within_distance_ball_ball, within_distance_ball_sphere, within_distance_segment_ball,

@@ -1,5 +1,5 @@
-//! [`Scene`]: many objects, each a [`Collider`] placed by a pose, and exact answers about every
-//! pair of them.
+//! [`Scene`]: many objects, each a [`Collider`] (a mesh) or a solid primitive ([`Shape`])
+//! placed by a pose, and exact answers about every pair of them.
 //!
 //! One collider (a mesh and its trees, built once) can be placed many times without copying:
 //! objects hold an `Arc<Collider>`. Objects are added, moved and removed by their
@@ -10,6 +10,24 @@
 //! [`Scene::set_solid`]), [`Collider::within_distance_at`] and [`Collider::distance_at`] for every
 //! pair, as a brute force over all pairs would give them. The world boxes are conservative (they
 //! hold the placed meshes as `placed()` rounds them), so no touching pair is ever dropped.
+//!
+//! # Shapes beside meshes
+//! [`Scene::add_shape`] adds a solid primitive (a box, capsule, cylinder, cone, half-space,
+//! convex hull, ball, triangle or segment), placed by its pose by the crate's placement rule
+//! ([`Shape::placed`], once, when it is added or moved). Its world box is a box holding the
+//! placed shape, rounded outwards; a half-space's is unbounded (the whole space, or one side
+//! of a coordinate plane when its normal is along an axis), which the broad phase takes like
+//! any other box. Every question then treats shapes and meshes alike, deciding each pair by
+//! its own exact query: two shapes by [`query::intersects`](crate::query::intersects),
+//! [`query::within_distance`](crate::query::within_distance) and
+//! [`query::distance`](crate::query::distance); a mesh and a shape by
+//! [`Collider::intersects_shape_at`] (the shape against the mesh's surface; with
+//! [`Scene::set_solid`], [`Collider::intersects_shape_solid_at`]: a shape inside a closed mesh,
+//! or a mesh inside a shape, counts), [`Collider::shape_within_distance_at`] and
+//! [`Collider::distance_to_shape_at`]. A shape is always a solid: two shapes touch when they
+//! share a point. Distances between a mesh and a shape are between the mesh's surface and the
+//! solid shape; their `triangles` are `(i, 0)` (mesh first) or `(0, i)` (shape first), and
+//! `None` between two shapes.
 //!
 //! Questions follow the crate's calling style: methods of the object that holds the built data,
 //! poses in coal's order.
@@ -54,6 +72,8 @@
 mod broad_phase;
 mod queries;
 
+mod pair;
+
 pub use queries::{NearestPair, SegmentHit};
 
 use std::collections::HashSet;
@@ -61,8 +81,11 @@ use std::sync::Arc;
 
 use nalgebra::Isometry3;
 
+use crate::bounding::shape_box::shape_box;
+use crate::bounding::Aabb;
 use crate::collider::Collider;
 use crate::error::Error;
+use crate::shape::Shape;
 use broad_phase::SweepAndPrune;
 
 /// A handle to an object of a [`Scene`]: its slot and the slot's generation, so a handle to a
@@ -81,10 +104,40 @@ impl ObjectId {
     }
 }
 
+/// What a scene object is: a mesh collider (shared, not copied) or a solid primitive in its
+/// own frame.
+#[derive(Debug, Clone)]
+pub enum Body {
+    /// A mesh, through its collider.
+    Mesh(Arc<Collider>),
+    /// A solid primitive.
+    Shape(Shape),
+}
+
+/// An object's body as the queries read it.
+#[derive(Debug, Clone)]
+enum Held {
+    Mesh(Arc<Collider>),
+    /// The shape as given, and placed by the object's pose (what every query reads).
+    Shape {
+        shape: Shape,
+        placed: Shape,
+    },
+}
+
+impl Held {
+    fn kind(&self) -> &'static str {
+        match self {
+            Held::Mesh(_) => "mesh",
+            Held::Shape { shape, .. } => shape.kind(),
+        }
+    }
+}
+
 /// One placed object.
 #[derive(Debug, Clone)]
 struct Object {
-    collider: Arc<Collider>,
+    held: Held,
     pose: Isometry3<f64>,
     generation: u32,
     /// The groups the object belongs to, and the groups it may collide with.
@@ -130,6 +183,36 @@ impl Scene {
         pose: Isometry3<f64>,
     ) -> Result<ObjectId, Error> {
         let world = collider.world_box(&pose)?;
+        Ok(self.insert(Held::Mesh(collider), pose, world))
+    }
+
+    /// Adds the solid primitive `shape` placed at `pose` ([`Shape::placed`]; see the
+    /// [module docs](self)). Fails, adding nothing, when the pose is not a finite rigid motion
+    /// or the placed shape leaves the range of the primitives
+    /// ([`MAX_MAGNITUDE`](crate::shape::MAX_MAGNITUDE)).
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use cga_collide::nalgebra::{Isometry3, Point3};
+    /// use cga_collide::{scene::Scene, Ball, Collider, TriMesh};
+    /// let cube = Arc::new(Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?));
+    /// let mut scene = Scene::new();
+    /// let block = scene.add(cube, Isometry3::identity())?;
+    /// let unit_ball = Ball::new(Point3::origin(), 0.5)?;
+    /// // Resting on the top face z = 1, and high above it.
+    /// let resting = scene.add_shape(unit_ball.into(), Isometry3::translation(0.5, 0.5, 1.5))?;
+    /// let above = scene.add_shape(unit_ball.into(), Isometry3::translation(0.5, 0.5, 3.0))?;
+    /// assert_eq!(scene.colliding_pairs()?, vec![(block, resting)]);
+    /// assert_eq!(scene.kind(above)?, "ball");
+    /// assert!(scene.collider(above).is_err());
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    pub fn add_shape(&mut self, shape: Shape, pose: Isometry3<f64>) -> Result<ObjectId, Error> {
+        let (placed, world) = placed_shape(&shape, &pose)?;
+        Ok(self.insert(Held::Shape { shape, placed }, pose, world))
+    }
+
+    fn insert(&mut self, held: Held, pose: Isometry3<f64>, world: Aabb) -> ObjectId {
         let index = self.free.pop().unwrap_or_else(|| {
             self.slots.push(None);
             self.generations.push(0);
@@ -137,18 +220,35 @@ impl Scene {
         });
         let generation = self.generations[index as usize];
         self.slots[index as usize] = Some(Object {
-            collider,
+            held,
             pose,
             generation,
             groups: u32::MAX,
             mask: u32::MAX,
         });
         self.broad.set(index, world);
-        Ok(ObjectId { index, generation })
+        ObjectId { index, generation }
     }
 
-    /// Removes an object, returning its collider.
+    /// Removes a mesh object, returning its collider. A shape object is refused
+    /// ([`Error::WrongObjectKind`]) and stays: remove it with
+    /// [`remove_object`](Self::remove_object).
     pub fn remove(&mut self, id: ObjectId) -> Result<Arc<Collider>, Error> {
+        self.collider(id)?;
+        match self.remove_object(id)? {
+            Body::Mesh(collider) => Ok(collider),
+            // Checked to be a mesh above.
+            Body::Shape(shape) => Err(Error::WrongObjectKind {
+                index: id.index,
+                expected: "mesh",
+                found: shape.kind(),
+                accessor: "remove_object",
+            }),
+        }
+    }
+
+    /// Removes an object of either kind, returning what it was.
+    pub fn remove_object(&mut self, id: ObjectId) -> Result<Body, Error> {
         self.object(id)?;
         let object = self.slots[id.index as usize].take().ok_or(unknown(id))?;
         self.generations[id.index as usize] = id.generation.wrapping_add(1);
@@ -156,19 +256,30 @@ impl Scene {
         self.broad.remove(id.index);
         self.excluded
             .retain(|&(a, b)| a != id.index && b != id.index);
-        Ok(object.collider)
+        Ok(match object.held {
+            Held::Mesh(collider) => Body::Mesh(collider),
+            Held::Shape { shape, .. } => Body::Shape(shape),
+        })
     }
 
     /// Moves an object to `pose`: its world box is recomputed and nothing else. On an error
     /// (a pose that is not a finite rigid motion, coordinates out of range) the object stays
     /// where it was.
     pub fn set_pose(&mut self, id: ObjectId, pose: Isometry3<f64>) -> Result<(), Error> {
-        let world = self.object(id)?.collider.world_box(&pose)?;
+        let (world, placed) = self.object(id)?.moved(&pose)?;
+        self.place(id, pose, world, placed);
+        Ok(())
+    }
+
+    /// Sets an object's pose, world box and (for a shape) placed shape, all checked.
+    fn place(&mut self, id: ObjectId, pose: Isometry3<f64>, world: Aabb, placed: Option<Shape>) {
         if let Some(o) = self.slots[id.index as usize].as_mut() {
             o.pose = pose;
+            if let (Held::Shape { placed: old, .. }, Some(new)) = (&mut o.held, placed) {
+                *old = new;
+            }
         }
         self.broad.set(id.index, world);
-        Ok(())
     }
 
     /// Moves many objects at once (a robot configuration, a simulation step). Every pose is
@@ -181,7 +292,7 @@ impl Scene {
             .enumerate()
             .map(|(index, (id, pose))| {
                 self.object(*id)
-                    .and_then(|o| o.collider.world_box(pose))
+                    .and_then(|o| o.moved(pose))
                     .map_err(|source| Error::InBatch {
                         index,
                         source: Box::new(source),
@@ -190,11 +301,8 @@ impl Scene {
             .collect::<Vec<_>>()
             .into_iter()
             .collect::<Result<_, _>>()?;
-        for ((id, pose), world) in poses.iter().zip(boxes) {
-            if let Some(o) = self.slots[id.index as usize].as_mut() {
-                o.pose = *pose;
-            }
-            self.broad.set(id.index, world);
+        for ((id, pose), (world, placed)) in poses.iter().zip(boxes) {
+            self.place(*id, *pose, world, placed);
         }
         Ok(())
     }
@@ -204,9 +312,36 @@ impl Scene {
         Ok(&self.object(id)?.pose)
     }
 
-    /// The collider of an object.
+    /// The collider of a mesh object; a shape object is [`Error::WrongObjectKind`].
     pub fn collider(&self, id: ObjectId) -> Result<&Arc<Collider>, Error> {
-        Ok(&self.object(id)?.collider)
+        match &self.object(id)?.held {
+            Held::Mesh(collider) => Ok(collider),
+            other => Err(Error::WrongObjectKind {
+                index: id.index,
+                expected: "mesh",
+                found: other.kind(),
+                accessor: "shape",
+            }),
+        }
+    }
+
+    /// The shape of a shape object, in its own frame (as given to
+    /// [`add_shape`](Self::add_shape)); a mesh object is [`Error::WrongObjectKind`].
+    pub fn shape(&self, id: ObjectId) -> Result<&Shape, Error> {
+        match &self.object(id)?.held {
+            Held::Shape { shape, .. } => Ok(shape),
+            Held::Mesh(_) => Err(Error::WrongObjectKind {
+                index: id.index,
+                expected: "shape",
+                found: "mesh",
+                accessor: "collider",
+            }),
+        }
+    }
+
+    /// What an object is: `"mesh"`, or its shape's kind ([`Shape::kind`], e.g. `"ball"`).
+    pub fn kind(&self, id: ObjectId) -> Result<&'static str, Error> {
+        Ok(self.object(id)?.held.kind())
     }
 
     /// The objects, in slot order.
@@ -256,7 +391,10 @@ impl Scene {
 
     /// What "touch" means for the pair questions: `false` (the default) the surfaces meet
     /// ([`Collider::collides_at`]); `true` the closed solids share a point, so an object wholly
-    /// inside another counts ([`Collider::collides_solid_at`]; meant for closed meshes).
+    /// inside another counts ([`Collider::collides_solid_at`]; meant for closed meshes). A
+    /// shape is always a solid: against a mesh, `false` asks whether it meets the mesh's
+    /// surface ([`Collider::intersects_shape_at`]), `true` whether it shares a point with the
+    /// mesh's solid ([`Collider::intersects_shape_solid_at`]).
     pub fn set_solid(&mut self, solid: bool) {
         self.solid = solid;
     }
@@ -292,6 +430,27 @@ impl Scene {
             && y.groups & x.mask != 0
             && !self.excluded.contains(&(a.min(b), a.max(b)))
     }
+}
+
+impl Object {
+    /// The world box (and for a shape, the placed shape) of this object at `pose`.
+    fn moved(&self, pose: &Isometry3<f64>) -> Result<(Aabb, Option<Shape>), Error> {
+        match &self.held {
+            Held::Mesh(collider) => Ok((collider.world_box(pose)?, None)),
+            Held::Shape { shape, .. } => {
+                let (placed, world) = placed_shape(shape, pose)?;
+                Ok((world, Some(placed)))
+            }
+        }
+    }
+}
+
+/// The shape placed by `pose`, checked against the range, and its world box.
+fn placed_shape(shape: &Shape, pose: &Isometry3<f64>) -> Result<(Shape, Aabb), Error> {
+    let placed = shape.placed(pose)?;
+    placed.check_range()?;
+    let world = shape_box(&placed);
+    Ok((placed, world))
 }
 
 fn unknown(id: ObjectId) -> Error {

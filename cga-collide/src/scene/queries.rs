@@ -1,15 +1,17 @@
 //! The questions a [`Scene`] answers: the broad phase proposes pairs (or objects), and each is
-//! decided exactly by the colliders' pose queries, over the cores.
+//! decided exactly by the colliders' pose queries or the shapes' pair queries, over the cores.
 
 use ga_core::scalar::{rational_from_f64, Rational, Real};
 use nalgebra::{Isometry3, Point3};
 
 use super::broad_phase::box_gap;
-use super::{ObjectId, Scene};
+use super::pair::Placed;
+use super::{placed_shape, ObjectId, Scene};
 use crate::collider::Collider;
 use crate::error::Error;
 use crate::parallel::*;
-use crate::query::CertifiedDistance;
+use crate::query::{self, segment_triangle_entry, CertifiedDistance};
+use crate::shape::Shape;
 use crate::Segment;
 
 /// A pair of objects with their certified distance.
@@ -23,7 +25,7 @@ pub struct SegmentHit {
     /// The object.
     pub object: ObjectId,
     /// The triangle of the object's mesh met first (the smallest index if several are met
-    /// first at the same point).
+    /// first at the same point); `0` for a shape object.
     pub triangle: u32,
     /// The exact parameter `t` of the first hit: the true value for the `f64` coordinates of
     /// the segment and of the placed mesh (see [`segment_triangle_entry`](crate::query::segment_triangle_entry)).
@@ -98,23 +100,37 @@ impl Scene {
         pose: &Isometry3<f64>,
     ) -> Result<Vec<ObjectId>, Error> {
         let world = collider.world_box(pose)?;
-        let near = self.broad.near_box(&world, 0.0);
+        self.colliding_with_outside(&world, Placed::Mesh(collider, pose))
+    }
+
+    /// Every object that an outside shape placed at `pose` ([`Shape::placed`]) would touch,
+    /// sorted (as [`colliding_at`](Self::colliding_at) for a collider).
+    pub fn colliding_at_shape(
+        &self,
+        shape: &Shape,
+        pose: &Isometry3<f64>,
+    ) -> Result<Vec<ObjectId>, Error> {
+        let (placed, world) = placed_shape(shape, pose)?;
+        self.colliding_with_outside(&world, Placed::Shape(&placed))
+    }
+
+    fn colliding_with_outside(
+        &self,
+        world: &crate::bounding::Aabb,
+        outside: Placed,
+    ) -> Result<Vec<ObjectId>, Error> {
+        let near = self.broad.near_box(world, 0.0);
         let hits = near
             .par_iter()
-            .map(|&o| {
-                let object = self.slot(o);
-                if self.solid {
-                    collider.collides_solid_at(pose, &object.collider, &object.pose)
-                } else {
-                    collider.collides_at(pose, &object.collider, &object.pose)
-                }
-            })
+            .map(|&o| outside.touches(self.slot(o).placed(), self.solid))
             .collect::<Result<Vec<bool>, Error>>()?;
         Ok(self.objects_hit(near, hits))
     }
 
-    /// Every pair of objects whose surfaces come within distance `c`, exactly (closed: a
-    /// distance of exactly `c` counts), sorted. NaN and negative `c` give no pair.
+    /// Every pair of objects whose surfaces (a shape's solid) come within distance `c`,
+    /// exactly (closed: a distance of exactly `c` counts), sorted. NaN and negative `c` give
+    /// no pair; a pair with a shape refuses a `c` that is not a finite distance
+    /// ([`Error::InvalidClearance`]).
     pub fn pairs_within_distance(&self, c: f64) -> Result<Vec<(ObjectId, ObjectId)>, Error> {
         if c.is_nan() || c < 0.0 {
             return Ok(Vec::new());
@@ -122,11 +138,7 @@ impl Scene {
         let candidates = self.candidates(c);
         let hits = candidates
             .par_iter()
-            .map(|&(a, b)| {
-                let (x, y) = (self.slot(a), self.slot(b));
-                x.collider
-                    .within_distance_at(&x.pose, &y.collider, &y.pose, c)
-            })
+            .map(|&(a, b)| self.slot(a).placed().within(self.slot(b).placed(), c))
             .collect::<Result<Vec<bool>, Error>>()?;
         Ok(self.ids_of(candidates.into_iter().zip(hits)))
     }
@@ -150,10 +162,10 @@ impl Scene {
             if !self.tested(a, b) {
                 return Ok::<bool, Error>(false);
             }
-            let (x, y) = (self.slot(a), self.slot(b));
-            touching = x
-                .collider
-                .touching_distance_at(&x.pose, &y.collider, &y.pose)?;
+            touching = self
+                .slot(a)
+                .placed()
+                .touching_distance(self.slot(b).placed())?;
             Ok(touching.is_some())
         })?;
         if let (Some((a, b)), Some(d)) = (found, touching) {
@@ -217,14 +229,9 @@ impl Scene {
         others.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
         // Surfaces that meet this one first (boxes at gap 0, in slot order): distance 0,
         // proved by an intersecting triangle pair, and the search stops there.
-        let me_object = self.slot(me);
+        let me_object = self.slot(me).placed();
         for &(_, o) in others.iter().take_while(|(gap, _)| *gap == 0.0) {
-            let other = self.slot(o);
-            if let Some(d) = me_object.collider.touching_distance_at(
-                &me_object.pose,
-                &other.collider,
-                &other.pose,
-            )? {
+            if let Some(d) = me_object.touching_distance(self.slot(o).placed())? {
                 return Ok(Some((self.id_of(o), d)));
             }
         }
@@ -241,17 +248,16 @@ impl Scene {
         Ok(best.map(|(o, d)| (self.id_of(o), d)))
     }
 
-    /// Every object whose surface the closed segment meets, sorted.
+    /// Every object whose surface (a shape's solid) the closed segment meets, sorted.
     pub fn segment_hits(&self, segment: &Segment) -> Result<Vec<ObjectId>, Error> {
         let near = self.near_segment(segment);
         let hits = near
             .par_iter()
-            .map(|&o| {
-                let object = self.slot(o);
-                object
-                    .collider
-                    .segment_hits_at(&object.pose, segment)
-                    .map(|t| !t.is_empty())
+            .map(|&o| match self.slot(o).placed() {
+                Placed::Mesh(collider, pose) => collider
+                    .segment_hits_at(pose, segment)
+                    .map(|t| !t.is_empty()),
+                Placed::Shape(shape) => query::intersects(&(*segment).into(), shape),
             })
             .collect::<Result<Vec<bool>, Error>>()?;
         Ok(self.objects_hit(near, hits))
@@ -261,6 +267,11 @@ impl Scene {
     /// along the segment: by the exact parameter of the first hit, ties (objects first met at
     /// the same point) by handle. See [`SegmentHit`]; the objects are those of
     /// [`segment_hits`](Self::segment_hits).
+    ///
+    /// A shape object's first hit is the least `t` with the point in the solid shape; it is
+    /// given exactly for triangles and half-spaces. The first point on the other shapes'
+    /// surfaces is not rational in general (a ball's is a root of a quadratic): a segment that
+    /// meets one of them is refused with [`Error::UnsupportedPair`].
     ///
     /// ```
     /// use std::sync::Arc;
@@ -284,9 +295,9 @@ impl Scene {
         let near = self.near_segment(segment);
         let firsts = near
             .par_iter()
-            .map(|&o| {
-                let object = self.slot(o);
-                object.collider.first_segment_hit_at(&object.pose, segment)
+            .map(|&o| match self.slot(o).placed() {
+                Placed::Mesh(collider, pose) => collider.first_segment_hit_at(pose, segment),
+                Placed::Shape(shape) => first_entry(segment, shape),
             })
             .collect::<Result<Vec<_>, Error>>()?;
         let mut out: Vec<SegmentHit> = near
@@ -326,21 +337,6 @@ impl Scene {
         pairs
     }
 
-    /// Whether two placed objects touch, in the scene's sense.
-    fn touch(&self, a: u32, b: u32) -> Result<bool, Error> {
-        let (x, y) = (self.slot(a), self.slot(b));
-        if self.solid {
-            x.collider.collides_solid_at(&x.pose, &y.collider, &y.pose)
-        } else {
-            x.collider.collides_at(&x.pose, &y.collider, &y.pose)
-        }
-    }
-
-    fn distance(&self, a: u32, b: u32) -> Result<CertifiedDistance, Error> {
-        let (x, y) = (self.slot(a), self.slot(b));
-        x.collider.distance_at(&x.pose, &y.collider, &y.pose)
-    }
-
     fn any_tested_pair(&self) -> Option<(f64, u32, u32)> {
         let ids: Vec<u32> = self.ids().into_iter().map(|o| o.index).collect();
         ids.iter().enumerate().find_map(|(k, &a)| {
@@ -375,4 +371,44 @@ impl Scene {
         out.sort_unstable();
         out
     }
+}
+
+/// Where the segment first enters the placed solid shape: `(0, t)` with the least exact `t`,
+/// `None` when it misses (see [`Scene::segment_hits_along`]).
+fn first_entry(segment: &Segment, shape: &Shape) -> Result<Option<(u32, Rational)>, Error> {
+    if !query::intersects(&(*segment).into(), shape)? {
+        return Ok(None);
+    }
+    let t = match shape {
+        Shape::Triangle(t) => segment_triangle_entry(segment, t),
+        Shape::HalfSpace(h) => Some(half_space_entry(segment, h.point(), h.normal())),
+        other => {
+            return Err(Error::UnsupportedPair {
+                query: "segment_hits_along",
+                a: "segment",
+                b: other.kind(),
+            })
+        }
+    };
+    Ok(t.map(|t| (0, t)))
+}
+
+/// The least `t ∈ [0, 1]` with `(a + t (b − a) − p)·n <= 0`, for a segment known to meet the
+/// half-space: `0` when `a` is in it, else where the segment crosses the plane.
+fn half_space_entry(
+    segment: &Segment,
+    p: &nalgebra::Point3<f64>,
+    n: &nalgebra::Vector3<f64>,
+) -> Rational {
+    let dot = |x: &nalgebra::Point3<f64>| -> Rational {
+        (0..3).fold(Rational::default(), |acc, k| {
+            &acc + &(&(&exact(x[k]) - &exact(p[k])) * &exact(n[k]))
+        })
+    };
+    let (at_a, at_b) = (dot(segment.a()), dot(segment.b()));
+    if at_a <= Rational::default() {
+        return Rational::default();
+    }
+    // at_a > 0 >= at_b: the crossing at_a / (at_a - at_b) lies in (0, 1].
+    &at_a / &(&at_a - &at_b)
 }

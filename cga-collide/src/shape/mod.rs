@@ -10,6 +10,7 @@
 //! | [`HalfSpace`] | the closed half-space below a plane |
 //! | [`ConvexHull`] | the exact convex hull of points |
 //! | [`Shape`] | any solid primitive above (the generic queries' and scenes' argument) |
+//! | [`PosePair`] | the poses of the two objects of one query of a batch |
 //! | [`polyhedron::ConvexPolyhedron`] | a validated convex polyhedron (vertices and faces) |
 //! | [`mesh::TriMesh`] | an indexed triangle mesh, with OBJ/OFF/PLY/STL loaders and built-in fixtures (feature `builtin-meshes`) |
 //!
@@ -41,6 +42,7 @@ mod half_space;
 pub(crate) mod limits;
 pub mod mesh;
 pub mod polyhedron;
+mod pose_pair;
 
 pub use any::Shape;
 pub use bounded::{Ball, Segment, Sphere, Triangle};
@@ -53,3 +55,4 @@ pub use half_space::HalfSpace;
 pub use limits::MAX_MAGNITUDE;
 pub use mesh::TriMesh;
 pub use polyhedron::ConvexPolyhedron;
+pub use pose_pair::PosePair;

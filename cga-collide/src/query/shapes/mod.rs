@@ -7,13 +7,21 @@
 //! * [`polytopal`]: shapes that are a convex polytope grown by a ball (points, segments,
 //!   triangles, cuboids, hulls, balls, capsules) and half-spaces;
 //! * [`round`]: every pair with a cylinder or a cone.
+//!
+//! Many poses in one call: [`intersects_batch`], [`within_distance_batch`] and
+//! [`distance_batch`] answer the `_at` query for every [`PosePair`], spread over the cores;
+//! each answer equals the `_at` answer, and the first refused pose is reported as
+//! [`Error::InBatch`]. The pair functions of the crate's naming rule
+//! (`intersects_cuboid_capsule` and the rest) are in [`named`].
 
 use nalgebra::Isometry3;
 
 use crate::error::Error;
+use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
-use crate::shape::Shape;
+use crate::shape::{PosePair, Shape};
 
+pub(crate) mod named;
 pub(crate) mod polytopal;
 pub(crate) mod round;
 
@@ -21,7 +29,7 @@ fn is_round(s: &Shape) -> bool {
     matches!(s, Shape::Cylinder(_) | Shape::Cone(_))
 }
 
-fn check_clearance(c: f64) -> Result<(), Error> {
+pub(crate) fn check_clearance(c: f64) -> Result<(), Error> {
     if c.is_finite() && c >= 0.0 && c <= crate::shape::MAX_MAGNITUDE {
         Ok(())
     } else {
@@ -102,4 +110,41 @@ pub fn distance_at(
     pose_b: &Isometry3<f64>,
 ) -> Result<CertifiedDistance, Error> {
     distance(&a.placed(pose_a)?, &b.placed(pose_b)?)
+}
+
+/// For each pose pair, [`intersects_at`] of `a` at `pose.a` and `b` at `pose.b`, spread over
+/// the cores; the first refused pose is [`Error::InBatch`] with its index.
+///
+/// ```
+/// use cga_collide::{nalgebra::{Isometry3, Point3}, query, shape::PosePair, Ball};
+/// let ball = Ball::new(Point3::origin(), 1.0)?.into();
+/// let poses: Vec<PosePair> = [1.5, 2.0, 2.5]
+///     .map(|x| PosePair::new(Isometry3::identity(), Isometry3::translation(x, 0.0, 0.0)))
+///     .into();
+/// assert_eq!(query::intersects_batch(&ball, &ball, &poses)?, vec![true, true, false]);
+/// # Ok::<(), cga_collide::Error>(())
+/// ```
+pub fn intersects_batch(a: &Shape, b: &Shape, poses: &[PosePair]) -> Result<Vec<bool>, Error> {
+    over_batch(poses, |p| intersects_at(a, &p.a, b, &p.b))
+}
+
+/// For each pose pair, [`within_distance_at`] with clearance `c`, spread over the cores; the
+/// first refused pose is [`Error::InBatch`] with its index.
+pub fn within_distance_batch(
+    a: &Shape,
+    b: &Shape,
+    poses: &[PosePair],
+    c: f64,
+) -> Result<Vec<bool>, Error> {
+    over_batch(poses, |p| within_distance_at(a, &p.a, b, &p.b, c))
+}
+
+/// For each pose pair, [`distance_at`], spread over the cores; the first refused pose is
+/// [`Error::InBatch`] with its index.
+pub fn distance_batch(
+    a: &Shape,
+    b: &Shape,
+    poses: &[PosePair],
+) -> Result<Vec<CertifiedDistance>, Error> {
+    over_batch(poses, |p| distance_at(a, &p.a, b, &p.b))
 }
