@@ -20,6 +20,7 @@ _ContactClass = Literal["disjoint", "touching", "penetrating", "a_inside_b", "b_
 _ContactKind = Literal["point", "segment", "polygon"]
 _Contact = Tuple[Tuple[int, int], _ContactKind, _Float64Array]
 _ExactPoint = Tuple[Fraction, Fraction, Fraction]
+_Object = Union["Shape", "Collider"]
 _Kind = Literal["ball", "cuboid", "capsule", "cylinder", "cone", "halfspace", "convex", "triangle", "segment"]
 
 ROTATION_TOLERANCE: float
@@ -234,6 +235,40 @@ class Collider:
         """The triangles the solid ball (``centre`` ``(3,)``, ``radius``) meets."""
     def ball_hits_at(self, pose: ArrayLike, centre: ArrayLike, radius: float) -> _Int64Array:
         """``ball_hits`` with the mesh at ``pose``."""
+    # solid primitives
+    def shape_hits(self, shape: Shape) -> _Int64Array:
+        """The triangles the closed ``shape`` (a ``Shape``) meets, an int64 array of indices, found
+        through the box tree (the same as testing every triangle).
+        """
+    def shape_hits_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> _Int64Array:
+        """``shape_hits`` with the mesh at ``pose`` and the shape placed by ``shape_pose``
+        (``Shape.placed``'s rule).
+        """
+    def intersects_shape(self, shape: Shape) -> bool:
+        """Whether the closed ``shape`` meets the surface (a shape inside a closed mesh does not)."""
+    def intersects_shape_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> bool:
+        """``intersects_shape`` under poses."""
+    def intersects_shape_solid(self, shape: Shape) -> bool:
+        """Whether the closed ``shape`` meets the closed solid of the mesh (inside counts). The
+        mesh should be closed.
+        """
+    def intersects_shape_solid_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> bool:
+        """``intersects_shape_solid`` under poses."""
+    def shape_within_distance(self, shape: Shape, c: float) -> bool:
+        """Whether the closed ``shape`` comes within distance ``c`` of the surface (closed:
+        exactly ``c`` counts; ``c`` finite and at least 0), exactly.
+        """
+    def shape_within_distance_at(
+        self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike, c: float
+    ) -> bool:
+        """``shape_within_distance`` under poses."""
+    def distance_to_shape(self, shape: Shape) -> Distance:
+        """The certified minimum distance between the surface and the closed ``shape`` (a
+        ``Distance``: ``witness_a`` on the mesh, ``witness_b`` on the shape, ``triangles``
+        ``(i, 0)`` with ``i`` the triangle of ``witness_a``).
+        """
+    def distance_to_shape_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> Distance:
+        """``distance_to_shape`` under poses (witnesses in world coordinates)."""
     # bytes and pickling (the box tree travels with the collider, never rebuilt)
     def to_bytes(self) -> bytes:
         """The collider as bytes (mesh, mode, shape of the box tree); ``Collider.from_bytes``
@@ -269,10 +304,11 @@ class ObjectId:
 
 @final
 class Scene:
-    """Many objects, each a ``Collider`` placed by a pose, and exact answers about every pair of
-    them. One collider can be placed many times without copying. A broad phase (sweep and
-    prune over world boxes) proposes pairs and each is decided exactly by the colliders' pose
-    queries, in parallel, with the GIL released.
+    """Many objects, each a ``Collider`` (a mesh: its surface) or a ``Shape`` (a solid
+    primitive) placed by a pose, and exact answers about every pair of them. One collider can
+    be placed many times without copying. A broad phase (sweep and prune over world boxes)
+    proposes pairs and each is decided exactly by the pair's pose queries, in parallel, with
+    the GIL released.
     """
 
     def __init__(self) -> None:
@@ -282,8 +318,14 @@ class Scene:
         """Adds ``collider`` at ``pose`` (``(4, 4)``; ``None`` is the identity) and
         returns its ``ObjectId``. The collider is shared, not copied.
         """
-    def remove(self, object: ObjectId) -> Collider:
-        """Removes an object and returns its collider."""
+    def add_shape(self, shape: Shape, pose: Optional[ArrayLike] = None) -> ObjectId:
+        """Adds the solid ``shape`` (a ``Shape``) at ``pose`` (``(4, 4)``; ``None`` is the
+        identity; ``Shape.placed``'s rule) and returns its ``ObjectId``.
+        """
+    def remove(self, object: ObjectId) -> Union[Collider, Shape]:
+        """Removes an object and returns it (the Rust ``remove_object``): its ``Collider``, or its
+        ``Shape`` (in its own frame).
+        """
     def set_pose(self, object: ObjectId, pose: ArrayLike) -> None:
         """Moves an object to ``pose`` (``(4, 4)``)."""
     def set_poses(self, objects: Sequence[ObjectId], poses: ArrayLike) -> None:
@@ -293,7 +335,11 @@ class Scene:
     def pose(self, object: ObjectId) -> _Float64Array:
         """The pose of an object, a ``(4, 4)`` float64 array."""
     def collider(self, object: ObjectId) -> Collider:
-        """The collider of an object."""
+        """The collider of a mesh object (``CgaError`` for a shape object)."""
+    def shape(self, object: ObjectId) -> Shape:
+        """The shape of a shape object, in its own frame (``CgaError`` for a mesh object)."""
+    def kind(self, object: ObjectId) -> Union[Literal["mesh"], _Kind]:
+        """What an object is: ``"mesh"``, or its shape's ``kind``."""
     def ids(self) -> List[ObjectId]:
         """The handles of every object, in slot order."""
     def exclude_pair(self, a: ObjectId, b: ObjectId) -> None:
@@ -309,15 +355,19 @@ class Scene:
         surfaces.
         """
     def colliding_pairs(self) -> List[Tuple[ObjectId, ObjectId]]:
-        """Every pair of objects ``(a, b)`` that touch, exactly, sorted, as a list of tuples of
-        ``ObjectId``.
+        """Every pair of objects ``(a, b)`` that touch (surfaces, or solids after ``set_solid``; a
+        shape is always its solid), exactly, sorted, as a list of tuples of ``ObjectId``.
         """
     def colliding_with(self, object: ObjectId) -> List[ObjectId]:
         """Every object that touches ``object``, sorted."""
-    def colliding_at(self, collider: Collider, pose: ArrayLike) -> List[ObjectId]:
-        """Every object that ``collider`` placed at ``pose`` would touch (it is not added)."""
+    def colliding_at(self, collider: Union[Collider, Shape], pose: ArrayLike) -> List[ObjectId]:
+        """Every object that ``collider`` (a ``Collider`` or a ``Shape``) placed at ``pose`` would
+        touch (it is not added).
+        """
     def pairs_within_distance(self, c: float) -> List[Tuple[ObjectId, ObjectId]]:
-        """Every pair of objects whose surfaces come within ``c`` (closed), sorted."""
+        """Every pair of objects whose surfaces (a shape's solid) come within ``c`` (closed),
+        sorted.
+        """
     def nearest_pair(self) -> Optional[Tuple[ObjectId, ObjectId, Distance]]:
         """The nearest pair ``(a, b, Distance)``, or ``None`` with fewer than two objects that may
         be paired.
@@ -502,36 +552,39 @@ class Segment(Shape):
     def b(self) -> _Float64Array:
         """The second end, a ``(3,)`` float64 array."""
 
-def intersects(a: Shape, b: Shape) -> bool:
-    """Whether the closed shapes ``a`` and ``b`` share a point, exactly (touching counts).
-    ``CgaError`` if the library has no exact test for the pair yet or a value is out of range.
+def intersects(a: _Object, b: _Object) -> bool:
+    """Whether ``a`` and ``b`` share a point, exactly (touching counts): each a ``Shape`` (a
+    closed solid) or a ``Collider`` (its surface, as in the collider's own questions).
+    ``CgaError`` if a value is out of range or the library has no exact test for the pair.
     """
-def intersects_at(a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike) -> bool:
+def intersects_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) -> bool:
     """``intersects`` with ``a`` placed at ``pose_a`` and ``b`` at ``pose_b`` (``(4, 4)`` rigid
-    motions; ``Shape.placed``'s rule).
+    motions; ``Shape.placed``'s rule for shapes).
     """
-def intersects_batch(a: Shape, b: Shape, poses_a: ArrayLike, poses_b: ArrayLike) -> _BoolArray:
+def intersects_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> _BoolArray:
     """``intersects_at`` for every pose pair: ``poses_a`` and ``poses_b`` are ``(k, 4, 4)``
     (either may be one ``(4, 4)`` pose); returns a ``(k,)`` bool array. The first refused
     pose raises ``CgaError`` with its index.
     """
-def within_distance(a: Shape, b: Shape, c: float) -> bool:
-    """Whether the closed shapes ``a`` and ``b`` come within distance ``c`` (closed: exactly
-    ``c`` counts; ``c`` finite and at least 0), exactly.
+def within_distance(a: _Object, b: _Object, c: float) -> bool:
+    """Whether ``a`` and ``b`` (shapes or colliders, as for ``intersects``) come within distance
+    ``c`` (closed: exactly ``c`` counts), exactly. With a shape, ``c`` must be finite and at
+    least 0; between two colliders, as ``Collider.within_distance``, only NaN is refused.
     """
-def within_distance_at(a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike, c: float) -> bool:
+def within_distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike, c: float) -> bool:
     """``within_distance`` under poses."""
 def within_distance_batch(
-    a: Shape, b: Shape, poses_a: ArrayLike, poses_b: ArrayLike, c: float
+    a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike, c: float
 ) -> _BoolArray:
     """``within_distance_at`` for every pose pair: a ``(k,)`` bool array."""
-def distance(a: Shape, b: Shape) -> Distance:
-    """The certified minimum distance between the closed shapes ``a`` and ``b`` (``0`` when they
-    meet), a ``Distance`` with witness points on each shape (``triangles`` is ``None``).
+def distance(a: _Object, b: _Object) -> Distance:
+    """The certified minimum distance between ``a`` and ``b`` (shapes or colliders, as for
+    ``intersects``; ``0`` when they meet), a ``Distance`` with a witness point on each.
+    ``triangles`` is ``None`` for two shapes and holds ``0`` for a shape's side.
     """
-def distance_at(a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike) -> Distance:
+def distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) -> Distance:
     """``distance`` under poses (witnesses in world coordinates)."""
-def distance_batch(a: Shape, b: Shape, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
+def distance_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
     """``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays."""
 
 def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = None) -> _Float64Array:
