@@ -7,6 +7,12 @@ under ``(4, 4)`` poses, and ``a.x_batch(b, poses_a, poses_b)`` for ``(k, 4, 4)``
 poses at once. A :class:`Scene` holds many placed colliders. :func:`pose_from_degrees` writes a
 pose as the command line's ``--rotate`` and ``--translate`` do.
 
+The solid primitives :class:`Ball`, :class:`Cuboid`, :class:`Capsule`, :class:`Cylinder`,
+:class:`Cone`, :class:`HalfSpace`, :class:`ConvexHull`, :class:`Triangle` and :class:`Segment`
+(each a :class:`Shape`) are exact closed sets; :func:`intersects`, :func:`within_distance` and
+:func:`distance` answer about any two of them, with ``_at`` forms under poses and ``_batch``
+forms for ``(k, 4, 4)`` arrays of poses.
+
 Arrays may be anything numpy reads as numbers that float64 holds exactly: float64 arrays in
 any memory layout, lists and tuples, integers up to 2^53, float16 and float32. Anything else
 (booleans, complex numbers, objects, strings, larger integers) and every refused input is a
@@ -19,25 +25,65 @@ names; ``Collider.contacts_during`` asks it of two colliders.
 """
 
 from ._native import (
+    MAX_MAGNITUDE,
     ROTATION_TOLERANCE,
+    Ball,
+    Capsule,
     CgaError,
     Collider,
+    Cone,
+    ConvexHull,
+    Cuboid,
+    Cylinder,
     Distance,
     DistanceBatch,
+    HalfSpace,
     ObjectId,
     Scene,
+    Segment,
+    Shape,
+    Triangle,
+    distance,
+    distance_at,
+    distance_batch,
+    intersects,
+    intersects_at,
+    intersects_batch,
     pose_from_degrees,
+    within_distance,
+    within_distance_at,
+    within_distance_batch,
 )
 from . import motion
 
 __all__ = [
+    "Ball",
+    "Capsule",
     "CgaError",
     "Collider",
+    "Cone",
+    "ConvexHull",
+    "Cuboid",
+    "Cylinder",
     "Distance",
     "DistanceBatch",
+    "HalfSpace",
+    "MAX_MAGNITUDE",
     "ObjectId",
     "ROTATION_TOLERANCE",
     "Scene",
+    "Segment",
+    "Shape",
+    "Triangle",
+    "distance",
+    "distance_at",
+    "distance_batch",
+    "intersects",
+    "intersects_at",
+    "intersects_batch",
     "motion",
     "pose_from_degrees",
+    "within_distance",
+    "within_distance_at",
+    "within_distance_batch",
 ]

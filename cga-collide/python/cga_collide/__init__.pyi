@@ -7,6 +7,7 @@ from typing import List, Literal, Optional, Sequence, Tuple, Union, final
 import numpy as np
 import numpy.typing as npt
 from numpy.typing import ArrayLike
+from typing_extensions import Self, disjoint_base
 
 from . import motion as motion
 from .motion import MotionContacts
@@ -19,6 +20,8 @@ _ContactClass = Literal["disjoint", "touching", "penetrating", "a_inside_b", "b_
 _ContactKind = Literal["point", "segment", "polygon"]
 _Contact = Tuple[Tuple[int, int], _ContactKind, _Float64Array]
 _ExactPoint = Tuple[Fraction, Fraction, Fraction]
+_Object = Union["Shape", "Collider"]
+_Kind = Literal["ball", "cuboid", "capsule", "cylinder", "cone", "halfspace", "convex", "triangle", "segment"]
 
 ROTATION_TOLERANCE: float
 """How far a pose's 3x3 block may be from a rotation: max |RᵀR − I|."""
@@ -28,10 +31,11 @@ class CgaError(ValueError):
 
 @final
 class Distance:
-    """A certified distance between two meshes: ``distance`` is within ``error_bound`` of the true
-    minimum distance between the surfaces; ``witness_a`` and ``witness_b`` are points on each
-    surface (world coordinates) whose distance is ``distance``; ``triangles`` is the pair of
-    triangle indices they lie on (``None`` when not known).
+    """A certified distance between two meshes (their surfaces) or two shapes (the solids):
+    ``distance`` is within ``error_bound`` of the true minimum distance; ``witness_a`` and
+    ``witness_b`` are points of each (world coordinates) whose distance is ``distance``;
+    ``triangles`` is the pair of triangle indices they lie on (``None`` for shapes, or when not
+    known).
     """
 
     @property
@@ -42,10 +46,10 @@ class Distance:
         """The proved bound on ``|distance − true distance|``."""
     @property
     def witness_a(self) -> _Float64Array:
-        """The witness point on the first mesh, a ``(3,)`` float64 array."""
+        """The witness point on the first mesh or shape, a ``(3,)`` float64 array."""
     @property
     def witness_b(self) -> _Float64Array:
-        """The witness point on the second mesh, a ``(3,)`` float64 array."""
+        """The witness point on the second mesh or shape, a ``(3,)`` float64 array."""
     @property
     def triangles(self) -> Optional[Tuple[int, int]]:
         """The triangle pair of the witnesses, or ``None``."""
@@ -231,6 +235,40 @@ class Collider:
         """The triangles the solid ball (``centre`` ``(3,)``, ``radius``) meets."""
     def ball_hits_at(self, pose: ArrayLike, centre: ArrayLike, radius: float) -> _Int64Array:
         """``ball_hits`` with the mesh at ``pose``."""
+    # solid primitives
+    def shape_hits(self, shape: Shape) -> _Int64Array:
+        """The triangles the closed ``shape`` (a ``Shape``) meets, an int64 array of indices, found
+        through the box tree (the same as testing every triangle).
+        """
+    def shape_hits_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> _Int64Array:
+        """``shape_hits`` with the mesh at ``pose`` and the shape placed by ``shape_pose``
+        (``Shape.placed``'s rule).
+        """
+    def intersects_shape(self, shape: Shape) -> bool:
+        """Whether the closed ``shape`` meets the surface (a shape inside a closed mesh does not)."""
+    def intersects_shape_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> bool:
+        """``intersects_shape`` under poses."""
+    def intersects_shape_solid(self, shape: Shape) -> bool:
+        """Whether the closed ``shape`` meets the closed solid of the mesh (inside counts). The
+        mesh should be closed.
+        """
+    def intersects_shape_solid_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> bool:
+        """``intersects_shape_solid`` under poses."""
+    def shape_within_distance(self, shape: Shape, c: float) -> bool:
+        """Whether the closed ``shape`` comes within distance ``c`` of the surface (closed:
+        exactly ``c`` counts; ``c`` finite and at least 0), exactly.
+        """
+    def shape_within_distance_at(
+        self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike, c: float
+    ) -> bool:
+        """``shape_within_distance`` under poses."""
+    def distance_to_shape(self, shape: Shape) -> Distance:
+        """The certified minimum distance between the surface and the closed ``shape`` (a
+        ``Distance``: ``witness_a`` on the mesh, ``witness_b`` on the shape, ``triangles``
+        ``(i, 0)`` with ``i`` the triangle of ``witness_a``).
+        """
+    def distance_to_shape_at(self, pose: ArrayLike, shape: Shape, shape_pose: ArrayLike) -> Distance:
+        """``distance_to_shape`` under poses (witnesses in world coordinates)."""
     # bytes and pickling (the box tree travels with the collider, never rebuilt)
     def to_bytes(self) -> bytes:
         """The collider as bytes (mesh, mode, shape of the box tree); ``Collider.from_bytes``
@@ -266,10 +304,11 @@ class ObjectId:
 
 @final
 class Scene:
-    """Many objects, each a ``Collider`` placed by a pose, and exact answers about every pair of
-    them. One collider can be placed many times without copying. A broad phase (sweep and
-    prune over world boxes) proposes pairs and each is decided exactly by the colliders' pose
-    queries, in parallel, with the GIL released.
+    """Many objects, each a ``Collider`` (a mesh: its surface) or a ``Shape`` (a solid
+    primitive) placed by a pose, and exact answers about every pair of them. One collider can
+    be placed many times without copying. A broad phase (sweep and prune over world boxes)
+    proposes pairs and each is decided exactly by the pair's pose queries, in parallel, with
+    the GIL released.
     """
 
     def __init__(self) -> None:
@@ -279,8 +318,14 @@ class Scene:
         """Adds ``collider`` at ``pose`` (``(4, 4)``; ``None`` is the identity) and
         returns its ``ObjectId``. The collider is shared, not copied.
         """
-    def remove(self, object: ObjectId) -> Collider:
-        """Removes an object and returns its collider."""
+    def add_shape(self, shape: Shape, pose: Optional[ArrayLike] = None) -> ObjectId:
+        """Adds the solid ``shape`` (a ``Shape``) at ``pose`` (``(4, 4)``; ``None`` is the
+        identity; ``Shape.placed``'s rule) and returns its ``ObjectId``.
+        """
+    def remove(self, object: ObjectId) -> Union[Collider, Shape]:
+        """Removes an object and returns it (the Rust ``remove_object``): its ``Collider``, or its
+        ``Shape`` (in its own frame).
+        """
     def set_pose(self, object: ObjectId, pose: ArrayLike) -> None:
         """Moves an object to ``pose`` (``(4, 4)``)."""
     def set_poses(self, objects: Sequence[ObjectId], poses: ArrayLike) -> None:
@@ -290,7 +335,11 @@ class Scene:
     def pose(self, object: ObjectId) -> _Float64Array:
         """The pose of an object, a ``(4, 4)`` float64 array."""
     def collider(self, object: ObjectId) -> Collider:
-        """The collider of an object."""
+        """The collider of a mesh object (``CgaError`` for a shape object)."""
+    def shape(self, object: ObjectId) -> Shape:
+        """The shape of a shape object, in its own frame (``CgaError`` for a mesh object)."""
+    def kind(self, object: ObjectId) -> Union[Literal["mesh"], _Kind]:
+        """What an object is: ``"mesh"``, or its shape's ``kind``."""
     def ids(self) -> List[ObjectId]:
         """The handles of every object, in slot order."""
     def exclude_pair(self, a: ObjectId, b: ObjectId) -> None:
@@ -306,15 +355,19 @@ class Scene:
         surfaces.
         """
     def colliding_pairs(self) -> List[Tuple[ObjectId, ObjectId]]:
-        """Every pair of objects ``(a, b)`` that touch, exactly, sorted, as a list of tuples of
-        ``ObjectId``.
+        """Every pair of objects ``(a, b)`` that touch (surfaces, or solids after ``set_solid``; a
+        shape is always its solid), exactly, sorted, as a list of tuples of ``ObjectId``.
         """
     def colliding_with(self, object: ObjectId) -> List[ObjectId]:
         """Every object that touches ``object``, sorted."""
-    def colliding_at(self, collider: Collider, pose: ArrayLike) -> List[ObjectId]:
-        """Every object that ``collider`` placed at ``pose`` would touch (it is not added)."""
+    def colliding_at(self, collider: Union[Collider, Shape], pose: ArrayLike) -> List[ObjectId]:
+        """Every object that ``collider`` (a ``Collider`` or a ``Shape``) placed at ``pose`` would
+        touch (it is not added).
+        """
     def pairs_within_distance(self, c: float) -> List[Tuple[ObjectId, ObjectId]]:
-        """Every pair of objects whose surfaces come within ``c`` (closed), sorted."""
+        """Every pair of objects whose surfaces (a shape's solid) come within ``c`` (closed),
+        sorted.
+        """
     def nearest_pair(self) -> Optional[Tuple[ObjectId, ObjectId, Distance]]:
         """The nearest pair ``(a, b, Distance)``, or ``None`` with fewer than two objects that may
         be paired.
@@ -323,6 +376,216 @@ class Scene:
         """The object nearest to ``object`` and the distance, ``(other, Distance)``, or ``None``."""
     def segment_hits(self, p: ArrayLike, q: ArrayLike) -> List[ObjectId]:
         """Every object whose surface the closed segment ``p``–``q`` meets, sorted."""
+
+MAX_MAGNITUDE: float
+"""The largest magnitude a shape's coordinate, vector component or radius may have: 2^500."""
+
+@disjoint_base
+class Shape:
+    """A solid primitive, the base class of ``Ball``, ``Cuboid``, ``Capsule``, ``Cylinder``,
+    ``Cone``, ``HalfSpace``, ``ConvexHull``, ``Triangle`` and ``Segment`` (not built itself).
+
+    Every shape is a closed set (touching counts) and is exactly the set that the float64
+    numbers given describe, never rounded: a cuboid's corners are exact sums, a cylinder's rim
+    is a true circle. Constructors take anything numpy reads as numbers that float64 holds
+    exactly; a wrong array shape, a non-finite value, a value beyond ``MAX_MAGNITUDE``, a
+    negative radius or a degenerate input the class refuses raise ``CgaError`` naming the
+    argument.
+
+    The module functions ``intersects``, ``within_distance`` and ``distance`` take any two
+    shapes, in one frame, under poses (``_at``) and for many poses at once (``_batch``).
+    Shapes are immutable, compare equal when built from the same numbers, and pickle.
+    """
+
+    def __eq__(self, value: object, /) -> bool: ...
+    @property
+    def kind(self) -> _Kind:
+        """The kind's name, as the ``cga shapes`` command line's JSON spells it: ``"ball"``,
+        ``"cuboid"``, ``"capsule"``, ``"cylinder"``, ``"cone"``, ``"halfspace"``, ``"convex"``,
+        ``"triangle"`` or ``"segment"``.
+        """
+    def placed(self, pose: ArrayLike) -> Self:
+        """This shape moved by ``pose`` (a ``(4, 4)`` rigid motion), as a shape of the same class,
+        by the library's placement rule: each defining point is mapped and each defining vector
+        rotated in float64, every coordinate rounded once, radii unchanged. Every ``_at`` and
+        ``_batch`` answer is the answer for the shapes placed so. Raises ``CgaError`` when a
+        placed value leaves the range or a cylinder's or cone's rounded axis ends coincide.
+        """
+    def __reduce__(self) -> Tuple[object, Tuple[object, ...]]: ...
+
+@final
+class Ball(Shape):
+    """The closed solid ball of ``centre`` (``(3,)``) and ``radius`` (at least 0; ``0`` is the
+    point).
+    """
+
+    def __new__(cls, centre: ArrayLike, radius: float) -> Ball: ...
+    @property
+    def centre(self) -> _Float64Array:
+        """The centre, a ``(3,)`` float64 array."""
+    @property
+    def radius(self) -> float:
+        """The radius."""
+
+@final
+class Cuboid(Shape):
+    """The closed solid ``centre + s1 U + s2 V + s3 W`` with ``|si| <= 1``, for ``centre``
+    (``(3,)``) and ``half_axes`` (``(3, 3)``, the half axes ``U``, ``V``, ``W`` as rows): a
+    box when the half axes are orthogonal, the parallelepiped they span otherwise, and the
+    flat parallelogram, segment or point they span when they are dependent.
+    ``Cuboid.axis_aligned(centre, half_extents)`` is the axis-aligned box.
+    """
+
+    def __new__(cls, centre: ArrayLike, half_axes: ArrayLike) -> Cuboid: ...
+    @staticmethod
+    def axis_aligned(centre: ArrayLike, half_extents: ArrayLike) -> Cuboid:
+        """The axis-aligned box ``centre ± half_extents`` (``(3,)`` each, every half extent at
+        least 0).
+        """
+    @property
+    def centre(self) -> _Float64Array:
+        """The centre, a ``(3,)`` float64 array."""
+    @property
+    def half_axes(self) -> _Float64Array:
+        """The half axes, a ``(3, 3)`` float64 array (one per row)."""
+
+@final
+class Capsule(Shape):
+    """The points within ``radius`` (at least 0) of the closed segment ``a``–``b`` (``(3,)``
+    each): a cylinder with round caps; ``a == b`` gives a ball, radius ``0`` the segment.
+    """
+
+    def __new__(cls, a: ArrayLike, b: ArrayLike, radius: float) -> Capsule: ...
+    @property
+    def a(self) -> _Float64Array:
+        """The first end of the axis, a ``(3,)`` float64 array."""
+    @property
+    def b(self) -> _Float64Array:
+        """The second end of the axis, a ``(3,)`` float64 array."""
+    @property
+    def radius(self) -> float:
+        """The radius."""
+
+@final
+class Cylinder(Shape):
+    """The closed solid cylinder of axis segment ``a``–``b`` (``(3,)`` each, distinct) and
+    ``radius`` (at least 0), with flat caps: the discs at ``a`` and ``b`` perpendicular to
+    ``b - a``. Radius ``0`` gives the segment.
+    """
+
+    def __new__(cls, a: ArrayLike, b: ArrayLike, radius: float) -> Cylinder: ...
+    @property
+    def a(self) -> _Float64Array:
+        """The centre of the first cap, a ``(3,)`` float64 array."""
+    @property
+    def b(self) -> _Float64Array:
+        """The centre of the second cap, a ``(3,)`` float64 array."""
+    @property
+    def radius(self) -> float:
+        """The radius."""
+
+@final
+class Cone(Shape):
+    """The closed solid cone of ``apex`` and the base disc of centre ``base`` (``(3,)`` each,
+    distinct) and ``radius`` (at least 0), perpendicular to ``base - apex``: the convex hull
+    of the apex and the disc. Radius ``0`` gives the segment ``apex``–``base``.
+    """
+
+    def __new__(cls, apex: ArrayLike, base: ArrayLike, radius: float) -> Cone: ...
+    @property
+    def apex(self) -> _Float64Array:
+        """The apex, a ``(3,)`` float64 array."""
+    @property
+    def base(self) -> _Float64Array:
+        """The centre of the base disc, a ``(3,)`` float64 array."""
+    @property
+    def radius(self) -> float:
+        """The radius of the base disc."""
+
+@final
+class HalfSpace(Shape):
+    """The closed half-space ``{x : (x - point)·normal <= 0}`` of ``point`` (``(3,)``, on the
+    boundary plane) and ``normal`` (``(3,)``, outward, not zero; used as given, not
+    normalised).
+    """
+
+    def __new__(cls, point: ArrayLike, normal: ArrayLike) -> HalfSpace: ...
+    @property
+    def point(self) -> _Float64Array:
+        """A point of the boundary plane, a ``(3,)`` float64 array."""
+    @property
+    def normal(self) -> _Float64Array:
+        """The outward normal as given, a ``(3,)`` float64 array."""
+
+@final
+class ConvexHull(Shape):
+    """The closed convex hull of ``points`` (``(n, 3)``, at least one), exactly: points inside
+    change nothing; one point, collinear or coplanar points give the point, segment or flat
+    polygon they span.
+    """
+
+    def __new__(cls, points: ArrayLike) -> ConvexHull: ...
+    @property
+    def points(self) -> _Float64Array:
+        """The points as given, a fresh ``(n, 3)`` float64 array."""
+
+@final
+class Triangle(Shape):
+    """The closed triangle ``abc`` (``(3,)`` each; collinear corners give the segment or point
+    they span).
+    """
+
+    def __new__(cls, a: ArrayLike, b: ArrayLike, c: ArrayLike) -> Triangle: ...
+    @property
+    def vertices(self) -> _Float64Array:
+        """The corners ``a``, ``b``, ``c`` as rows, a ``(3, 3)`` float64 array."""
+
+@final
+class Segment(Shape):
+    """The closed segment ``a``–``b`` (``(3,)`` each; the point when they coincide)."""
+
+    def __new__(cls, a: ArrayLike, b: ArrayLike) -> Segment: ...
+    @property
+    def a(self) -> _Float64Array:
+        """The first end, a ``(3,)`` float64 array."""
+    @property
+    def b(self) -> _Float64Array:
+        """The second end, a ``(3,)`` float64 array."""
+
+def intersects(a: _Object, b: _Object) -> bool:
+    """Whether ``a`` and ``b`` share a point, exactly (touching counts): each a ``Shape`` (a
+    closed solid) or a ``Collider`` (its surface, as in the collider's own questions).
+    ``CgaError`` if a value is out of range or the library has no exact test for the pair.
+    """
+def intersects_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) -> bool:
+    """``intersects`` with ``a`` placed at ``pose_a`` and ``b`` at ``pose_b`` (``(4, 4)`` rigid
+    motions; ``Shape.placed``'s rule for shapes).
+    """
+def intersects_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> _BoolArray:
+    """``intersects_at`` for every pose pair: ``poses_a`` and ``poses_b`` are ``(k, 4, 4)``
+    (either may be one ``(4, 4)`` pose); returns a ``(k,)`` bool array. The first refused
+    pose raises ``CgaError`` with its index.
+    """
+def within_distance(a: _Object, b: _Object, c: float) -> bool:
+    """Whether ``a`` and ``b`` (shapes or colliders, as for ``intersects``) come within distance
+    ``c`` (closed: exactly ``c`` counts), exactly. With a shape, ``c`` must be finite and at
+    least 0; between two colliders, as ``Collider.within_distance``, only NaN is refused.
+    """
+def within_distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike, c: float) -> bool:
+    """``within_distance`` under poses."""
+def within_distance_batch(
+    a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike, c: float
+) -> _BoolArray:
+    """``within_distance_at`` for every pose pair: a ``(k,)`` bool array."""
+def distance(a: _Object, b: _Object) -> Distance:
+    """The certified minimum distance between ``a`` and ``b`` (shapes or colliders, as for
+    ``intersects``; ``0`` when they meet), a ``Distance`` with a witness point on each.
+    ``triangles`` is ``None`` for two shapes and holds ``0`` for a shape's side.
+    """
+def distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) -> Distance:
+    """``distance`` under poses (witnesses in world coordinates)."""
+def distance_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
+    """``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays."""
 
 def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = None) -> _Float64Array:
     """The ``(4, 4)`` float64 pose that rotates by ``degrees[0]`` about the x axis, then by
@@ -334,13 +597,33 @@ def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = Non
     """
 
 __all__ = [
+    "Ball",
+    "Capsule",
     "CgaError",
     "Collider",
+    "Cone",
+    "ConvexHull",
+    "Cuboid",
+    "Cylinder",
     "Distance",
     "DistanceBatch",
+    "HalfSpace",
+    "MAX_MAGNITUDE",
     "ObjectId",
     "ROTATION_TOLERANCE",
     "Scene",
+    "Segment",
+    "Shape",
+    "Triangle",
+    "distance",
+    "distance_at",
+    "distance_batch",
+    "intersects",
+    "intersects_at",
+    "intersects_batch",
     "motion",
     "pose_from_degrees",
+    "within_distance",
+    "within_distance_at",
+    "within_distance_batch",
 ]

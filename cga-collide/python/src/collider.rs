@@ -4,6 +4,7 @@ use std::sync::Arc;
 
 use cga_collide::collider::{Collider as RsCollider, Mode, PosePair};
 use cga_collide::nalgebra::{Isometry3, Point3};
+use cga_collide::shape::Shape;
 use cga_collide::{Ball, Error, Segment, Sphere, TriMesh, Triangle};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
@@ -13,6 +14,7 @@ use pyo3::types::{PyBytes, PyTuple};
 use crate::answers::{contact_tuples, exact_distance_tuple};
 use crate::convert::{self, bools, err, value_error, Arg, Bools, Indices, Pairs};
 use crate::distance::{distance_batch, Distance, DistanceBatch};
+use crate::shape_queries::shape as shape_arg;
 
 /// A triangle mesh built once (its box tree and the layout the pose queries read), and every
 /// question about it.
@@ -87,6 +89,17 @@ impl Collider {
     ) -> PyResult<T> {
         let pose = convert::pose(pose, "pose")?;
         self.alone(py, |a| q(a, &pose)).map_err(err)
+    }
+
+    /// A question about this mesh at `pose` and a shape placed by `shape_pose`.
+    fn with_shape<T: Send>(
+        &self, py: Python<'_>, pose: &Arg, s: &Arg, shape_pose: &Arg,
+        q: impl FnOnce(&RsCollider, &Isometry3<f64>, &Shape, &Isometry3<f64>) -> Result<T, Error> + Send,
+    ) -> PyResult<T> {
+        let s = shape_arg(s, "shape")?;
+        let (pose, shape_pose) =
+            (convert::pose(pose, "pose")?, convert::pose(shape_pose, "shape_pose")?);
+        self.alone(py, |a| q(a, &pose, s, &shape_pose)).map_err(err)
     }
 
     /// A question about `self` and `other` in one frame.
@@ -524,5 +537,84 @@ impl Collider {
         let s = Ball::new(convert::point(centre, "centre")?, radius).map_err(err)?;
         let hits = self.placed(py, pose, |a, pose| a.ball_hits_at(pose, &s))?;
         Ok(convert::indices(py, &hits))
+    }
+
+    // ------------------------------------------------------------------ solid primitives
+
+    /// The triangles the closed ``shape`` (a ``Shape``) meets, an int64 array of indices, found
+    /// through the box tree (the same as testing every triangle).
+    fn shape_hits<'py>(&self, py: Python<'py>, shape: &Arg) -> PyResult<Indices<'py>> {
+        let s = shape_arg(shape, "shape")?;
+        let hits = self.alone(py, |a| a.shape_hits(s)).map_err(err)?;
+        Ok(convert::indices(py, &hits))
+    }
+
+    /// ``shape_hits`` with the mesh at ``pose`` and the shape placed by ``shape_pose``
+    /// (``Shape.placed``'s rule).
+    fn shape_hits_at<'py>(
+        &self, py: Python<'py>, pose: &Arg, shape: &Arg, shape_pose: &Arg,
+    ) -> PyResult<Indices<'py>> {
+        let hits = self.with_shape(py, pose, shape, shape_pose, RsCollider::shape_hits_at)?;
+        Ok(convert::indices(py, &hits))
+    }
+
+    /// Whether the closed ``shape`` meets the surface (a shape inside a closed mesh does not).
+    fn intersects_shape(&self, py: Python<'_>, shape: &Arg) -> PyResult<bool> {
+        let s = shape_arg(shape, "shape")?;
+        self.alone(py, |a| a.intersects_shape(s)).map_err(err)
+    }
+
+    /// ``intersects_shape`` under poses.
+    fn intersects_shape_at(
+        &self, py: Python<'_>, pose: &Arg, shape: &Arg, shape_pose: &Arg,
+    ) -> PyResult<bool> {
+        self.with_shape(py, pose, shape, shape_pose, RsCollider::intersects_shape_at)
+    }
+
+    /// Whether the closed ``shape`` meets the closed solid of the mesh (inside counts). The
+    /// mesh should be closed.
+    fn intersects_shape_solid(&self, py: Python<'_>, shape: &Arg) -> PyResult<bool> {
+        let s = shape_arg(shape, "shape")?;
+        self.alone(py, |a| a.intersects_shape_solid(s)).map_err(err)
+    }
+
+    /// ``intersects_shape_solid`` under poses.
+    fn intersects_shape_solid_at(
+        &self, py: Python<'_>, pose: &Arg, shape: &Arg, shape_pose: &Arg,
+    ) -> PyResult<bool> {
+        self.with_shape(py, pose, shape, shape_pose, RsCollider::intersects_shape_solid_at)
+    }
+
+    /// Whether the closed ``shape`` comes within distance ``c`` of the surface (closed:
+    /// exactly ``c`` counts; ``c`` finite and at least 0), exactly.
+    fn shape_within_distance(&self, py: Python<'_>, shape: &Arg, c: f64) -> PyResult<bool> {
+        let s = shape_arg(shape, "shape")?;
+        self.alone(py, |a| a.shape_within_distance(s, c)).map_err(err)
+    }
+
+    /// ``shape_within_distance`` under poses.
+    fn shape_within_distance_at(
+        &self, py: Python<'_>, pose: &Arg, shape: &Arg, shape_pose: &Arg, c: f64,
+    ) -> PyResult<bool> {
+        self.with_shape(py, pose, shape, shape_pose, |a, p, s, sp| {
+            a.shape_within_distance_at(p, s, sp, c)
+        })
+    }
+
+    /// The certified minimum distance between the surface and the closed ``shape`` (a
+    /// ``Distance``: ``witness_a`` on the mesh, ``witness_b`` on the shape, ``triangles``
+    /// ``(i, 0)`` with ``i`` the triangle of ``witness_a``).
+    fn distance_to_shape(&self, py: Python<'_>, shape: &Arg) -> PyResult<Distance> {
+        let s = shape_arg(shape, "shape")?;
+        let d = self.alone(py, |a| a.distance_to_shape(s)).map_err(err)?;
+        Ok(Distance::from(&d))
+    }
+
+    /// ``distance_to_shape`` under poses (witnesses in world coordinates).
+    fn distance_to_shape_at(
+        &self, py: Python<'_>, pose: &Arg, shape: &Arg, shape_pose: &Arg,
+    ) -> PyResult<Distance> {
+        let d = self.with_shape(py, pose, shape, shape_pose, RsCollider::distance_to_shape_at)?;
+        Ok(Distance::from(&d))
     }
 }

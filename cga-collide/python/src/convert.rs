@@ -239,6 +239,32 @@ fn bad_index(face: usize, index: i128, vertex_count: usize) -> PyErr {
     ))
 }
 
+/// Three numbers from a `(3,)` array, as given: the library's constructors check them and
+/// name the argument (a shape's point or vector, whose range rule is the library's).
+pub fn triple(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; 3]> {
+    read(obj, name, &[Some(3)], |v| Ok([v[0], v[1], v[2]]))
+}
+
+/// Rows of three numbers from an `(n, 3)` array (`n` given or any), as given.
+pub fn triples(obj: &Bound<'_, PyAny>, name: &str, n: Option<usize>) -> PyResult<Vec<[f64; 3]>> {
+    read(obj, name, &[n, Some(3)], |v| Ok(v.outer_iter().map(|r| [r[0], r[1], r[2]]).collect()))
+}
+
+/// One number (a Python or numpy number, or a 0-d array) that float64 holds exactly, as
+/// given: the library's constructors check it (a radius: finite, at least 0).
+pub fn number(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
+    let a = f64_array(obj, name)?;
+    let r = a.readonly();
+    let v = r.as_array();
+    if v.ndim() != 0 {
+        return Err(value_error(format!(
+            "{name}: expected a number, got an array of shape {:?}",
+            v.shape()
+        )));
+    }
+    Ok(v.iter().next().copied().unwrap_or(f64::NAN))
+}
+
 /// A point: a `(3,)` array of finite numbers (a NaN point answers no question).
 pub fn point(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Point3<f64>> {
     read(obj, name, &[Some(3)], |v| {

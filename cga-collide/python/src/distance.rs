@@ -5,10 +5,11 @@ use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
-/// A certified distance between two meshes: ``distance`` is within ``error_bound`` of the true
-/// minimum distance between the surfaces; ``witness_a`` and ``witness_b`` are points on each
-/// surface (world coordinates) whose distance is ``distance``; ``triangles`` is the pair of
-/// triangle indices they lie on (``None`` when not known).
+/// A certified distance between two meshes (their surfaces) or two shapes (the solids):
+/// ``distance`` is within ``error_bound`` of the true minimum distance; ``witness_a`` and
+/// ``witness_b`` are points of each (world coordinates) whose distance is ``distance``;
+/// ``triangles`` is the pair of triangle indices they lie on (``None`` for shapes, or when not
+/// known).
 #[pyclass(frozen, module = "cga_collide")]
 #[derive(Clone)]
 pub struct Distance {
@@ -39,13 +40,13 @@ impl From<&CertifiedDistance> for Distance {
 
 #[pymethods]
 impl Distance {
-    /// The witness point on the first mesh, a ``(3,)`` float64 array.
+    /// The witness point on the first mesh or shape, a ``(3,)`` float64 array.
     #[getter]
     fn witness_a<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         PyArray1::from_slice(py, &self.wa)
     }
 
-    /// The witness point on the second mesh, a ``(3,)`` float64 array.
+    /// The witness point on the second mesh or shape, a ``(3,)`` float64 array.
     #[getter]
     fn witness_b<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         PyArray1::from_slice(py, &self.wb)

@@ -4,7 +4,7 @@
 //! Arrays come in as anything numpy reads as numbers that float64 holds exactly (never a
 //! rounding cast) and go out as numpy arrays; shapes are checked; every refused input and
 //! every library error is a `CgaError` (a `ValueError`) naming the argument; the GIL is
-//! released while Rust works.
+//! released while Rust works (but for single shape-pair questions, shorter than releasing it).
 
 mod answers;
 mod collider;
@@ -12,6 +12,8 @@ mod convert;
 mod distance;
 mod motion;
 mod scene;
+mod shape_queries;
+mod shapes;
 
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -30,7 +32,7 @@ fn pose_from_degrees<'py>(
     Ok(convert::matrix(py, &convert::degrees_pose(degrees, translation)?))
 }
 
-/// Exact collision detection: colliders, scenes, numpy in and out.
+/// Exact collision detection: colliders, shapes, scenes, numpy in and out.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<collider::Collider>()?;
@@ -39,6 +41,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
     motion::register(m)?;
+    shapes::register(m)?;
+    shape_queries::register(m)?;
     m.add_function(wrap_pyfunction!(pose_from_degrees, m)?)?;
     m.add("CgaError", m.py().get_type::<convert::CgaError>())?;
     m.add("ROTATION_TOLERANCE", convert::ROTATION_TOLERANCE)?;

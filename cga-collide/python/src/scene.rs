@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use cga_collide::scene::{ObjectId as RsObjectId, Scene as RsScene};
+use cga_collide::scene::{Body, ObjectId as RsObjectId, Scene as RsScene};
 use cga_collide::Segment;
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -11,6 +11,8 @@ use pyo3::types::PyTuple;
 use crate::collider::Collider;
 use crate::convert::{self, err, value_error};
 use crate::distance::Distance;
+use crate::shape_queries::shape as shape_arg;
+use crate::shapes::{shape_object, PyShape};
 
 /// A handle to an object of a ``Scene``: hashable, comparable, with ``index`` (its slot:
 /// 0, 1, 2, ... in the order objects are added to a fresh scene). A handle to a removed
@@ -42,10 +44,11 @@ fn id(i: RsObjectId) -> ObjectId {
     ObjectId { inner: i }
 }
 
-/// Many objects, each a ``Collider`` placed by a pose, and exact answers about every pair of
-/// them. One collider can be placed many times without copying. A broad phase (sweep and
-/// prune over world boxes) proposes pairs and each is decided exactly by the colliders' pose
-/// queries, in parallel, with the GIL released.
+/// Many objects, each a ``Collider`` (a mesh: its surface) or a ``Shape`` (a solid
+/// primitive) placed by a pose, and exact answers about every pair of them. One collider can
+/// be placed many times without copying. A broad phase (sweep and prune over world boxes)
+/// proposes pairs and each is decided exactly by the pair's pose queries, in parallel, with
+/// the GIL released.
 #[pyclass(module = "cga_collide")]
 pub struct Scene {
     inner: RsScene,
@@ -84,9 +87,24 @@ impl Scene {
         self.inner.add(Arc::clone(&collider.inner), pose).map(id).map_err(err)
     }
 
-    /// Removes an object and returns its collider.
-    fn remove(&mut self, object: ObjectId) -> PyResult<Collider> {
-        self.inner.remove(object.inner).map(|inner| Collider { inner }).map_err(err)
+    /// Adds the solid ``shape`` (a ``Shape``) at ``pose`` (``(4, 4)``; ``None`` is the
+    /// identity; ``Shape.placed``'s rule) and returns its ``ObjectId``.
+    #[pyo3(signature = (shape, pose = None))]
+    fn add_shape(
+        &mut self, shape: &Bound<'_, PyAny>, pose: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<ObjectId> {
+        let s = shape_arg(shape, "shape")?.clone();
+        let pose = convert::pose_or_identity(pose, "pose")?;
+        self.inner.add_shape(s, pose).map(id).map_err(err)
+    }
+
+    /// Removes an object and returns it (the Rust ``remove_object``): its ``Collider``, or its
+    /// ``Shape`` (in its own frame).
+    fn remove<'py>(&mut self, py: Python<'py>, object: ObjectId) -> PyResult<Bound<'py, PyAny>> {
+        match self.inner.remove_object(object.inner).map_err(err)? {
+            Body::Mesh(inner) => Ok(Bound::new(py, Collider { inner })?.into_any()),
+            Body::Shape(s) => shape_object(py, s),
+        }
     }
 
     /// Moves an object to ``pose`` (``(4, 4)``).
@@ -116,10 +134,20 @@ impl Scene {
         Ok(convert::matrix(py, p))
     }
 
-    /// The collider of an object.
+    /// The collider of a mesh object (``CgaError`` for a shape object).
     fn collider(&self, object: ObjectId) -> PyResult<Collider> {
         let c = self.inner.collider(object.inner).map_err(err)?;
         Ok(Collider { inner: Arc::clone(c) })
+    }
+
+    /// The shape of a shape object, in its own frame (``CgaError`` for a mesh object).
+    fn shape<'py>(&self, py: Python<'py>, object: ObjectId) -> PyResult<Bound<'py, PyAny>> {
+        shape_object(py, self.inner.shape(object.inner).map_err(err)?.clone())
+    }
+
+    /// What an object is: ``"mesh"``, or its shape's ``kind``.
+    fn kind(&self, object: ObjectId) -> PyResult<&'static str> {
+        self.inner.kind(object.inner).map_err(err)
     }
 
     /// The handles of every object, in slot order.
@@ -149,8 +177,8 @@ impl Scene {
         self.inner.set_solid(solid);
     }
 
-    /// Every pair of objects ``(a, b)`` that touch, exactly, sorted, as a list of tuples of
-    /// ``ObjectId``.
+    /// Every pair of objects ``(a, b)`` that touch (surfaces, or solids after ``set_solid``; a
+    /// shape is always its solid), exactly, sorted, as a list of tuples of ``ObjectId``.
     fn colliding_pairs<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyTuple>>> {
         let s = &self.inner;
         let pairs = py.detach(|| s.colliding_pairs()).map_err(err)?;
@@ -164,17 +192,28 @@ impl Scene {
         Ok(hits.into_iter().map(id).collect())
     }
 
-    /// Every object that ``collider`` placed at ``pose`` would touch (it is not added).
+    /// Every object that ``collider`` (a ``Collider`` or a ``Shape``) placed at ``pose`` would
+    /// touch (it is not added).
     fn colliding_at(
-        &self, py: Python<'_>, collider: &Collider, pose: &Bound<'_, PyAny>,
+        &self, py: Python<'_>, collider: &Bound<'_, PyAny>, pose: &Bound<'_, PyAny>,
     ) -> PyResult<Vec<ObjectId>> {
-        let pose = convert::pose(pose, "pose")?;
-        let (s, c) = (&self.inner, &collider.inner);
-        let hits = py.detach(|| s.colliding_at(c, &pose)).map_err(err)?;
-        Ok(hits.into_iter().map(id).collect())
+        let s = &self.inner;
+        let hits = if let Ok(c) = collider.cast::<Collider>() {
+            let (c, pose) = (&c.get().inner, convert::pose(pose, "pose")?);
+            py.detach(|| s.colliding_at(c, &pose))
+        } else if collider.cast::<PyShape>().is_ok() {
+            let (shape, pose) = (shape_arg(collider, "collider")?, convert::pose(pose, "pose")?);
+            py.detach(|| s.colliding_at_shape(shape, &pose))
+        } else {
+            return Err(pyo3::exceptions::PyTypeError::new_err(
+                "collider: expected a Collider or a Shape",
+            ));
+        };
+        Ok(hits.map_err(err)?.into_iter().map(id).collect())
     }
 
-    /// Every pair of objects whose surfaces come within ``c`` (closed), sorted.
+    /// Every pair of objects whose surfaces (a shape's solid) come within ``c`` (closed),
+    /// sorted.
     fn pairs_within_distance<'py>(
         &self, py: Python<'py>, c: f64,
     ) -> PyResult<Vec<Bound<'py, PyTuple>>> {
