@@ -2,6 +2,8 @@
 
 #[path = "../examples/declare_algebra.rs"]
 mod declare_algebra;
+#[path = "../examples/ik_chain.rs"]
+mod ik_chain;
 #[path = "../examples/symbolic_derivation.rs"]
 mod symbolic_derivation;
 
@@ -13,4 +15,9 @@ fn declare_algebra_runs() {
 #[test]
 fn symbolic_derivation_runs() {
     symbolic_derivation::main();
+}
+
+#[test]
+fn ik_chain_matches_ga_benchmarks_sanity_values() {
+    ik_chain::check_sanity();
 }
