@@ -2,6 +2,8 @@
 
 #[path = "../examples/declare_algebra.rs"]
 mod declare_algebra;
+// Only the sanity check is called here; the benchmark runs as the example.
+#[allow(dead_code)]
 #[path = "../examples/ik_chain.rs"]
 mod ik_chain;
 #[path = "../examples/symbolic_derivation.rs"]
