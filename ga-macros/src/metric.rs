@@ -33,7 +33,7 @@ impl Form {
             .enumerate()
             .filter_map(|(k, j)| {
                 let m = self.matrix[i][j];
-                let sign = if k % 2 == 0 { 1 } else { -1 };
+                let sign = if k.is_multiple_of(2) { 1 } else { -1 };
                 (m != 0).then_some((sign * m, c & !(1 << j)))
             })
             .collect()
@@ -44,7 +44,7 @@ impl Form {
         let mut out = self.contract(i, c);
         if c & (1 << i) == 0 {
             let below = (c & ((1 << i) - 1)).count_ones();
-            out.push((if below % 2 == 0 { 1 } else { -1 }, c | (1 << i)));
+            out.push((if below.is_multiple_of(2) { 1 } else { -1 }, c | (1 << i)));
         }
         out
     }

@@ -234,19 +234,18 @@ fn check_metric(rows: &[Vec<i32>], span: Span, errors: &mut crate::errors::Error
         ));
         return None;
     }
-    for i in 0..n {
-        for j in 0..i {
-            if rows[i][j] != rows[j][i] {
-                errors.push(err(
-                    span,
-                    format!(
-                        "`metric` must be symmetric: entry ({i}, {j}) is {} but ({j}, {i}) is {}",
-                        rows[i][j], rows[j][i]
-                    ),
-                ));
-                return None;
-            }
-        }
+    let asymmetric = (0..n)
+        .flat_map(|i| (0..i).map(move |j| (i, j)))
+        .find(|&(i, j)| rows[i][j] != rows[j][i]);
+    if let Some((i, j)) = asymmetric {
+        errors.push(err(
+            span,
+            format!(
+                "`metric` must be symmetric: entry ({i}, {j}) is {} but ({j}, {i}) is {}",
+                rows[i][j], rows[j][i]
+            ),
+        ));
+        return None;
     }
     if let Some(&v) = rows.iter().flatten().find(|v| v.abs() > 16) {
         errors.push(err(
