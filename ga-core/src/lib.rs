@@ -76,6 +76,7 @@
 extern crate self as ga_core;
 
 pub mod cga;
+pub mod cga_null;
 pub mod exp_log;
 pub mod format;
 pub mod interop;

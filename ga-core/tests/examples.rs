@@ -2,6 +2,10 @@
 
 #[path = "../examples/declare_algebra.rs"]
 mod declare_algebra;
+// Only the sanity check is called here; the benchmark runs as the example.
+#[allow(dead_code)]
+#[path = "../examples/ik_chain.rs"]
+mod ik_chain;
 #[path = "../examples/symbolic_derivation.rs"]
 mod symbolic_derivation;
 
@@ -13,4 +17,9 @@ fn declare_algebra_runs() {
 #[test]
 fn symbolic_derivation_runs() {
     symbolic_derivation::main();
+}
+
+#[test]
+fn ik_chain_matches_ga_benchmarks_sanity_values() {
+    ik_chain::check_sanity();
 }

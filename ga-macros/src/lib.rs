@@ -76,6 +76,7 @@
 mod blade;
 mod emit;
 mod errors;
+mod metric;
 mod model;
 mod parse;
 mod wgsl;

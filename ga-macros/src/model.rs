@@ -8,6 +8,7 @@ use proc_macro2::Span;
 use syn::{Attribute, Ident};
 
 use crate::blade::{self, Blade};
+use crate::metric::{Form, Terms};
 use crate::parse::{BladeSpec, Declaration};
 
 /// Largest number of generators supported (1024 blades). Only the declared types and the
@@ -176,7 +177,8 @@ pub const PRODUCTS: [ProductSpec; 6] = [
     },
 ];
 
-/// `sign * lhs_blade * rhs_blade` contributes to an output blade.
+/// `sign * lhs_blade * rhs_blade` contributes to an output blade (`sign` is `±1` in an
+/// orthogonal basis, any nonzero integer with a `metric`).
 #[derive(Clone, Copy, Debug)]
 pub struct Term {
     pub sign: i32,
@@ -191,16 +193,20 @@ pub struct Bilinear {
     pub outputs: Vec<(Blade, Vec<Term>)>,
 }
 
-/// A linear map blade -> ± blade (dual, undual).
+/// A linear map blade -> ± blade (dual, undual); with a `metric`, an input blade may reach
+/// several output blades and an output blade may sum several inputs.
 pub struct BladeMap {
     pub output: Output,
-    /// `(output blade, sign, input blade)` in canonical output order.
+    /// `(output blade, coefficient, input blade)` in canonical output order.
     pub entries: Vec<(Blade, i32, Blade)>,
 }
 
 pub struct Algebra {
     pub module: Ident,
+    /// The squares of the generators (the diagonal of the `metric`, when one is given).
     pub signature: Vec<i32>,
+    /// The bilinear form, when the declaration gives a non-diagonal `metric`.
+    pub form: Option<Form>,
     pub basis: Vec<String>,
     /// Display names indexed by blade mask (`1`, `e1`, `e12`).
     pub blade_names: Vec<String>,
@@ -212,6 +218,59 @@ pub struct Algebra {
     pub degenerate: bool,
     /// Outer attributes put on every generated struct (the `attributes` key).
     pub struct_attributes: Vec<Attribute>,
+}
+
+/// Checks a `metric` (square, symmetric, at most [`MAX_GENERATORS`] rows); `None` when it is
+/// diagonal (the orthogonal code path, identical to a `signature`) or wrong (errors pushed).
+fn check_metric(rows: &[Vec<i32>], span: Span, errors: &mut crate::errors::Errors) -> Option<Form> {
+    let n = rows.len();
+    if let Some((i, r)) = rows.iter().enumerate().find(|(_, r)| r.len() != n) {
+        errors.push(err(
+            span,
+            format!(
+                "`metric` must be square: row {i} has {} entries, the matrix {n} rows",
+                r.len()
+            ),
+        ));
+        return None;
+    }
+    let asymmetric = (0..n)
+        .flat_map(|i| (0..i).map(move |j| (i, j)))
+        .find(|&(i, j)| rows[i][j] != rows[j][i]);
+    if let Some((i, j)) = asymmetric {
+        errors.push(err(
+            span,
+            format!(
+                "`metric` must be symmetric: entry ({i}, {j}) is {} but ({j}, {i}) is {}",
+                rows[i][j], rows[j][i]
+            ),
+        ));
+        return None;
+    }
+    if let Some(&v) = rows.iter().flatten().find(|v| v.abs() > 16) {
+        errors.push(err(
+            span,
+            format!("`metric` entry {v} is too large: entries are small integers (|v| <= 16)"),
+        ));
+        return None;
+    }
+    let diagonal = (0..n).all(|i| (0..n).all(|j| i == j || rows[i][j] == 0));
+    if diagonal && rows.iter().enumerate().all(|(i, r)| r[i].abs() <= 1) {
+        return None;
+    }
+    Some(Form::new(rows.to_vec()))
+}
+
+/// The one term of a blade map in an orthogonal basis.
+fn single(terms: Terms) -> (i32, Blade) {
+    terms.first().copied().unwrap_or((0, 0))
+}
+
+fn collect_terms(acc: BTreeMap<Blade, i32>) -> Terms {
+    acc.into_iter()
+        .filter(|&(_, c)| c != 0)
+        .map(|(b, c)| (c, b))
+        .collect()
 }
 
 fn err(span: Span, msg: impl std::fmt::Display) -> syn::Error {
@@ -233,6 +292,10 @@ impl Algebra {
             ));
         }
         let signature: Vec<i32> = decl.signature.iter().map(|e| e.value).collect();
+        let form = decl
+            .metric
+            .as_ref()
+            .and_then(|(rows, span)| check_metric(rows, *span, &mut errors));
         let default_basis: Vec<String> = (1..=n).map(|i| format!("e{i}")).collect();
         let basis: Vec<String> = match &decl.basis {
             Some(idents) if idents.len() != n => {
@@ -398,10 +461,34 @@ impl Algebra {
             is_dense: true,
             emitted: dense_emitted,
         });
+        let degenerate = match &form {
+            Some(form) => {
+                let full = (1u32 << n) - 1;
+                !form.geometric(full, full).iter().any(|&(_, b)| b == 0)
+            }
+            None => signature.contains(&0),
+        };
+        if let (Some(form), Some((_, span))) = (&form, &decl.metric) {
+            let full = (1u32 << n) - 1;
+            if let Some(&(ii, _)) = form.geometric(full, full).iter().find(|t| t.1 == 0) {
+                if ii.abs() != 1 {
+                    errors.push(err(
+                        *span,
+                        format!(
+                            "the pseudoscalar of this metric squares to {ii}: duals need `I I = \
+                             ±1` (scale the basis so that the form's determinant is ±1) or a \
+                             degenerate form"
+                        ),
+                    ));
+                    errors.finish()?;
+                }
+            }
+        }
         Ok(Algebra {
             module: decl.name,
             struct_attributes: decl.attributes,
-            degenerate: signature.contains(&0),
+            form,
+            degenerate,
             signature,
             basis,
             blade_names,
@@ -456,8 +543,9 @@ impl Algebra {
         }
     }
 
-    /// `sign, blade` of the product of two basis blades, or `None` when it vanishes.
-    pub fn blade_product(&self, kind: Product, a: Blade, b: Blade) -> Option<(i32, Blade)> {
+    /// `sign, blade` of the product of two basis blades, or `None` when it vanishes
+    /// (orthogonal bases only; see [`blade_terms`](Self::blade_terms)).
+    fn blade_product(&self, kind: Product, a: Blade, b: Blade) -> Option<(i32, Blade)> {
         let keep = match kind {
             Product::Geometric => true,
             Product::Wedge => a & b == 0,
@@ -465,13 +553,13 @@ impl Algebra {
             Product::RightContraction => a & b == b,
             Product::ScalarProduct => a == b,
             Product::Regressive => {
-                let (s1, da) = self.dual_blade(a);
-                let (s2, db) = self.dual_blade(b);
+                let (s1, da) = single(self.dual_blade(a));
+                let (s2, db) = single(self.dual_blade(b));
                 if da & db != 0 {
                     return None;
                 }
                 let w = blade::reorder_sign(da, db);
-                let (s3, out) = self.undual_blade(da | db);
+                let (s3, out) = single(self.undual_blade(da | db));
                 return Some((s1 * s2 * w * s3, out));
             }
         };
@@ -482,26 +570,90 @@ impl Algebra {
         (sign != 0).then_some((sign, out))
     }
 
+    /// The product of two basis blades as a sum of blades with integer coefficients: one
+    /// term at most in an orthogonal basis, several with a `metric` (`n0 n∞ = -1 + n0∧n∞`).
+    /// The wedge, contractions and scalar product are the grade parts of the geometric product
+    /// that the grades of `a` and `b` select, so they hold in any basis of outer-product blades.
+    pub fn blade_terms(&self, kind: Product, a: Blade, b: Blade) -> Terms {
+        let Some(form) = &self.form else {
+            return self.blade_product(kind, a, b).into_iter().collect();
+        };
+        let (ga, gb) = (blade::grade(a), blade::grade(b));
+        let keep_grade = match kind {
+            Product::Geometric => None,
+            Product::Wedge => Some(ga + gb),
+            Product::LeftContraction if gb >= ga => Some(gb - ga),
+            Product::RightContraction if ga >= gb => Some(ga - gb),
+            Product::ScalarProduct => Some(0),
+            Product::LeftContraction | Product::RightContraction => return Vec::new(),
+            Product::Regressive => {
+                let mut acc = BTreeMap::new();
+                for (s1, da) in self.dual_blade(a) {
+                    for (s2, db) in self.dual_blade(b) {
+                        if da & db != 0 {
+                            continue;
+                        }
+                        let w = blade::reorder_sign(da, db);
+                        for (s3, out) in self.undual_blade(da | db) {
+                            *acc.entry(out).or_insert(0) += s1 * s2 * w * s3;
+                        }
+                    }
+                }
+                return collect_terms(acc);
+            }
+        };
+        form.geometric(a, b)
+            .into_iter()
+            .filter(|&(_, out)| keep_grade.is_none_or(|g| blade::grade(out) == g))
+            .collect()
+    }
+
+    /// `e_a e_b` in the algebra's basis (any metric).
+    fn geometric_terms(&self, a: Blade, b: Blade) -> Terms {
+        match &self.form {
+            Some(form) => form.geometric(a, b),
+            None => {
+                let (s, out) = blade::geometric(a, b, &self.signature);
+                if s == 0 {
+                    Vec::new()
+                } else {
+                    vec![(s, out)]
+                }
+            }
+        }
+    }
+
+    /// `I I` for the pseudoscalar `I` (0 when the metric is degenerate).
+    pub fn pseudoscalar_square(&self) -> i32 {
+        let full = self.pseudoscalar();
+        self.geometric_terms(full, full)
+            .into_iter()
+            .find(|&(_, b)| b == 0)
+            .map_or(0, |(s, _)| s)
+    }
+
     /// `dual(e_b)`: `e_b I⁻¹`, or the right complement for degenerate signatures.
-    pub fn dual_blade(&self, b: Blade) -> (i32, Blade) {
+    pub fn dual_blade(&self, b: Blade) -> Terms {
         let full = self.pseudoscalar();
         if self.degenerate {
-            (blade::reorder_sign(b, full ^ b), full ^ b)
+            vec![(blade::reorder_sign(b, full ^ b), full ^ b)]
         } else {
-            // I⁻¹ = I / (I I) and I I = ±1, so I⁻¹ = (I I) I.
-            let (ii, _) = blade::geometric(full, full, &self.signature);
-            let (s, out) = blade::geometric(b, full, &self.signature);
-            (s * ii, out)
+            // I⁻¹ = I / (I I) and I I = ±1 (checked when the model is built), so I⁻¹ = (I I) I.
+            let ii = self.pseudoscalar_square();
+            self.geometric_terms(b, full)
+                .into_iter()
+                .map(|(s, out)| (s * ii, out))
+                .collect()
         }
     }
 
     /// `undual(e_b)`: `e_b I`, or the left complement for degenerate signatures.
-    pub fn undual_blade(&self, b: Blade) -> (i32, Blade) {
+    pub fn undual_blade(&self, b: Blade) -> Terms {
         let full = self.pseudoscalar();
         if self.degenerate {
-            (blade::reorder_sign(full ^ b, b), full ^ b)
+            vec![(blade::reorder_sign(full ^ b, b), full ^ b)]
         } else {
-            blade::geometric(b, full, &self.signature)
+            self.geometric_terms(b, full)
         }
     }
 
@@ -510,7 +662,7 @@ impl Algebra {
         let mut by_out: BTreeMap<Blade, Vec<Term>> = BTreeMap::new();
         for &a in lhs {
             for &b in rhs {
-                if let Some((sign, out)) = self.blade_product(kind, a, b) {
+                for (sign, out) in self.blade_terms(kind, a, b) {
                     by_out.entry(out).or_default().push(Term {
                         sign,
                         lhs: a,
@@ -532,13 +684,10 @@ impl Algebra {
     }
 
     /// The dual (or undual) of a type as a blade map.
-    pub fn blade_map(&self, blades: &[Blade], f: impl Fn(Blade) -> (i32, Blade)) -> BladeMap {
+    pub fn blade_map(&self, blades: &[Blade], f: impl Fn(Blade) -> Terms) -> BladeMap {
         let mut entries: Vec<(Blade, i32, Blade)> = blades
             .iter()
-            .map(|&b| {
-                let (s, out) = f(b);
-                (out, s, b)
-            })
+            .flat_map(|&b| f(b).into_iter().map(move |(s, out)| (out, s, b)))
             .collect();
         let position = |b: Blade| self.canonical.iter().position(|&c| c == b).unwrap_or(0);
         entries.sort_by_key(|e| position(e.0));
@@ -551,15 +700,33 @@ impl Algebra {
         }
     }
 
-    /// Terms of `⟨A Ã⟩₀`: `(sign, blade)` for each blade whose square survives.
-    pub fn norm_squared_terms(&self, blades: &[Blade]) -> Vec<(i32, Blade)> {
-        blades
-            .iter()
-            .filter_map(|&b| {
-                let (s, _) = blade::geometric(b, b, &self.signature);
-                (s != 0).then_some((s * blade::reverse_sign(b), b))
-            })
-            .collect()
+    /// Terms of `⟨A Ã⟩₀`: `(coefficient, a, b)` for each pair of blades whose `⟨e_a ẽ_b⟩₀`
+    /// survives (only `a = b` in an orthogonal basis).
+    pub fn norm_squared_terms(&self, blades: &[Blade]) -> Vec<(i32, Blade, Blade)> {
+        if self.form.is_none() {
+            return blades
+                .iter()
+                .filter_map(|&b| {
+                    let (s, _) = blade::geometric(b, b, &self.signature);
+                    (s != 0).then_some((s * blade::reverse_sign(b), b, b))
+                })
+                .collect();
+        }
+        let mut out = Vec::new();
+        for &a in blades {
+            for &b in blades {
+                let s: i32 = self
+                    .geometric_terms(a, b)
+                    .into_iter()
+                    .filter(|&(_, o)| o == 0)
+                    .map(|(s, _)| s * blade::reverse_sign(b))
+                    .sum();
+                if s != 0 {
+                    out.push((s, a, b));
+                }
+            }
+        }
+        out
     }
 
     /// Terms of `⟨P Ṽ⟩` restricted to the blades of `out`: the second half of a sandwich.
@@ -569,6 +736,9 @@ impl Algebra {
         v: &[Blade],
         out: &[Blade],
     ) -> Vec<(Blade, Vec<Term>)> {
+        if self.form.is_some() {
+            return self.sandwich_terms_general(p, v, out);
+        }
         out.iter()
             .map(|&o| {
                 let terms = p
@@ -589,6 +759,33 @@ impl Algebra {
                     .collect();
                 (o, terms)
             })
+            .collect()
+    }
+
+    /// [`sandwich_terms`](Self::sandwich_terms) with a `metric`: every pair of blades of `P`
+    /// and `V` whose product reaches a blade of `out`.
+    fn sandwich_terms_general(
+        &self,
+        p: &[Blade],
+        v: &[Blade],
+        out: &[Blade],
+    ) -> Vec<(Blade, Vec<Term>)> {
+        let mut by_out: BTreeMap<Blade, Vec<Term>> = BTreeMap::new();
+        for &pb in p {
+            for &vb in v {
+                for (s, o) in self.geometric_terms(pb, vb) {
+                    if out.contains(&o) {
+                        by_out.entry(o).or_default().push(Term {
+                            sign: s * blade::reverse_sign(vb),
+                            lhs: pb,
+                            rhs: vb,
+                        });
+                    }
+                }
+            }
+        }
+        out.iter()
+            .map(|&o| (o, by_out.remove(&o).unwrap_or_default()))
             .collect()
     }
 }

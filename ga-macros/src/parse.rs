@@ -32,6 +32,9 @@ pub struct Declaration {
     pub name: Ident,
     pub signature: Vec<SignatureEntry>,
     pub signature_span: Span,
+    /// `metric: [[1, 0], [0, -1]]`: the bilinear form of the basis vectors, instead of a
+    /// `signature` (which is its diagonal); rows as written, with their spans.
+    pub metric: Option<(Vec<Vec<i32>>, Span)>,
     pub basis: Option<Vec<Ident>>,
     pub basis_span: Span,
     pub types: Vec<TypeDecl>,
@@ -57,6 +60,7 @@ impl Parse for Declaration {
         // Every error found is reported, not only the first (syntax errors still stop parsing).
         let mut errors = Errors::default();
         let mut wgsl: Option<Vec<Ident>> = None;
+        let mut metric: Option<(Vec<Vec<i32>>, Span)> = None;
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
@@ -79,7 +83,18 @@ impl Parse for Declaration {
                     | ("dense", _, _, _, _, Some(_), _)
                     | ("attributes", .., Some(_))
             );
-            let given = given || (key_str == "wgsl" && wgsl.is_some());
+            let given = given
+                || (key_str == "wgsl" && wgsl.is_some())
+                || (key_str == "metric" && metric.is_some());
+            if (key_str == "metric" && signature.is_some())
+                || (key_str == "signature" && metric.is_some())
+            {
+                errors.push(syn::Error::new(
+                    key.span(),
+                    "give either `signature` (an orthogonal basis) or `metric` (any symmetric \
+                     bilinear form), not both",
+                ));
+            }
             if given {
                 errors.push(syn::Error::new(
                     key.span(),
@@ -92,6 +107,35 @@ impl Parse for Declaration {
                 }
                 "signature" => {
                     signature = Some((parse_signature(input, &mut errors)?, key.span()));
+                }
+                "metric" => {
+                    let content;
+                    bracketed!(content in input);
+                    let mut rows = Vec::new();
+                    while !content.is_empty() {
+                        let row;
+                        bracketed!(row in content);
+                        let mut entries = Vec::new();
+                        while !row.is_empty() {
+                            let mut sign = 1;
+                            if row.peek(Token![-]) {
+                                row.parse::<Token![-]>()?;
+                                sign = -1;
+                            } else if row.peek(Token![+]) {
+                                row.parse::<Token![+]>()?;
+                            }
+                            let lit: LitInt = row.parse()?;
+                            entries.push(sign * lit.base10_parse::<i32>()?);
+                            if !row.is_empty() {
+                                row.parse::<Token![,]>()?;
+                            }
+                        }
+                        rows.push(entries);
+                        if !content.is_empty() {
+                            content.parse::<Token![,]>()?;
+                        }
+                    }
+                    metric = Some((rows, key.span()));
                 }
                 "basis" => {
                     let content;
@@ -121,8 +165,8 @@ impl Parse for Declaration {
                     errors.push(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown key `{other}`: expected one of `name`, `signature`, `basis`, \
-                             `types`, `dense`, `attributes`, `wgsl`"
+                            "unknown key `{other}`: expected one of `name`, `signature`, `metric`, \
+                             `basis`, `types`, `dense`, `attributes`, `wgsl`"
                         ),
                     ));
                     // Skip its value and go on checking the rest.
@@ -140,6 +184,19 @@ impl Parse for Declaration {
         };
         if name.is_none() {
             errors.push(missing("name", "cga"));
+        }
+        // A metric gives the signature as its diagonal (the model checks the matrix).
+        if signature.is_none() {
+            if let Some((rows, span)) = &metric {
+                let diagonal = rows
+                    .iter()
+                    .enumerate()
+                    .map(|(i, r)| SignatureEntry {
+                        value: r.get(i).copied().unwrap_or(0),
+                    })
+                    .collect();
+                signature = Some((diagonal, *span));
+            }
         }
         if signature.is_none() {
             errors.push(missing("signature", "[+1, +1, +1, +1, -1]"));
@@ -163,6 +220,7 @@ impl Parse for Declaration {
             name,
             signature,
             signature_span,
+            metric,
             basis,
             basis_span,
             types,

@@ -70,6 +70,13 @@ pub fn emit(alg: &Algebra, listed: Option<&[Ident]>) -> syn::Result<TokenStream>
     let Some(listed) = listed else {
         return Ok(TokenStream::new());
     };
+    if let Some(first) = listed.first().filter(|_| alg.form.is_some()) {
+        return Err(syn::Error::new(
+            first.span(),
+            "`wgsl` is not supported with a non-diagonal `metric` yet: declare the algebra with \
+             a `signature` for shaders",
+        ));
+    }
     let mut indices = Vec::new();
     for id in listed {
         let Some(i) = alg.types.iter().position(|t| t.name == *id) else {

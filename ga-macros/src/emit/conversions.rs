@@ -13,7 +13,10 @@ pub(super) fn emit_conversions(alg: &Algebra, index: usize, t: &TypeModel) -> To
     let fields: Vec<Ident> = t.blades.iter().map(|&b| field_ident(alg, b)).collect();
     let zero = quote!(<T as #ring>::zero());
     let count = t.blades.len();
-    let dense_items = if t.is_dense {
+    // The general inverse runs on the run-time signature: orthogonal bases only.
+    let dense_items = if t.is_dense && alg.form.is_some() {
+        TokenStream::new()
+    } else if t.is_dense {
         quote! {
             impl<T: ::ga_core::scalar::Field> #name<T> {
                 /// The unchecked solution of `A X = 1` by Gaussian elimination on the

@@ -79,9 +79,17 @@ fn construct(alg: &Algebra, out: Output, mut exprs: BTreeMap<Blade, TokenStream>
 }
 
 /// `x1 - x2 + x3`: a flat left-to-right sum, so the float evaluation order is the written one.
+/// A coefficient other than `±1` (only with a `metric`) multiplies its term by the integer.
 fn signed_sum(terms: Vec<(i32, TokenStream)>) -> TokenStream {
+    let ring = ring();
     let mut out = TokenStream::new();
     for (k, (sign, t)) in terms.into_iter().enumerate() {
+        let t = if sign.abs() == 1 {
+            t
+        } else {
+            let m = i64::from(sign.abs());
+            quote!((#t) * <T as #ring>::from_i64(#m))
+        };
         out = match (k, sign < 0) {
             (0, false) => t,
             (0, true) => quote!(-(#t)),

@@ -1,11 +1,14 @@
 //! Unary operations: reverse, involutions, dual and undual (and `!`), grade projection, norm,
 //! scaling, and the two inverses.
 
+use std::collections::BTreeMap;
+
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
 use super::{construct, field_ident, out_ty, ring, signed_sum};
 use crate::blade::{self, Blade};
+use crate::metric::Terms;
 use crate::model::{Algebra, TypeModel};
 
 pub(super) fn emit_unary(alg: &Algebra, t: &TypeModel) -> TokenStream {
@@ -28,24 +31,24 @@ pub(super) fn emit_unary(alg: &Algebra, t: &TypeModel) -> TokenStream {
     let involution = unary_signs(blade::involution_sign);
     let conjugate = unary_signs(blade::conjugate_sign);
 
-    let blade_map_fn = |fname: Ident, doc: &str, f: &dyn Fn(Blade) -> (i32, Blade)| {
+    let blade_map_fn = |fname: Ident, doc: &str, f: &dyn Fn(Blade) -> Terms| {
         let map = alg.blade_map(&t.blades, f);
         if !alg.is_emitted(map.output) {
             return TokenStream::new();
         }
         let ty = out_ty(alg, map.output);
-        let exprs = map
-            .entries
-            .iter()
-            .map(|&(o, s, b)| {
-                let fi = field_ident(alg, b);
-                let e = if s < 0 {
-                    quote!(-self.#fi.clone())
-                } else {
-                    quote!(self.#fi.clone())
-                };
-                (o, e)
-            })
+        // Each output blade is the sum of its inputs (one in an orthogonal basis).
+        let mut by_out: BTreeMap<Blade, Vec<(i32, TokenStream)>> = BTreeMap::new();
+        for &(o, s, b) in &map.entries {
+            let fi = field_ident(alg, b);
+            by_out
+                .entry(o)
+                .or_default()
+                .push((s, quote!(self.#fi.clone())));
+        }
+        let exprs = by_out
+            .into_iter()
+            .map(|(o, terms)| (o, signed_sum(terms)))
             .collect();
         let value = construct(alg, map.output, exprs);
         quote! {
@@ -97,9 +100,9 @@ pub(super) fn emit_unary(alg: &Algebra, t: &TypeModel) -> TokenStream {
     let norm_terms: Vec<(i32, TokenStream)> = alg
         .norm_squared_terms(&t.blades)
         .into_iter()
-        .map(|(s, b)| {
-            let fi = field_ident(alg, b);
-            (s, quote!(self.#fi.clone() * self.#fi.clone()))
+        .map(|(s, a, b)| {
+            let (fa, fb) = (field_ident(alg, a), field_ident(alg, b));
+            (s, quote!(self.#fa.clone() * self.#fb.clone()))
         })
         .collect();
     let norm = if norm_terms.is_empty() {
@@ -110,6 +113,21 @@ pub(super) fn emit_unary(alg: &Algebra, t: &TypeModel) -> TokenStream {
 
     let count = t.blades.len();
     let inverse_doc = inverse_doc(t);
+    // The checked inverse runs on the run-time signature (an orthogonal basis); with a
+    // `metric` only the versor inverse is generated.
+    let inverse = if alg.form.is_none() {
+        quote! {
+            #[doc = #inverse_doc]
+            pub fn inverse(&self) -> Option<Self> {
+                let x = self.coefficients();
+                let [#(#fields),*]: [T; #count] =
+                    ::ga_core::inverse::inverse(&SIGNATURE, &Self::BLADE_MASKS, &x)?.try_into().ok()?;
+                Some(#name { #(#fields),* })
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
     quote! {
         impl<T: #ring> #name<T> {
             /// The reverse `Ã` (order of factors reversed).
@@ -148,13 +166,7 @@ pub(super) fn emit_unary(alg: &Algebra, t: &TypeModel) -> TokenStream {
                 let inv = ::ga_core::scalar::Field::checked_recip(&self.norm_squared())?;
                 Some(self.reverse().scale(&inv))
             }
-            #[doc = #inverse_doc]
-            pub fn inverse(&self) -> Option<Self> {
-                let x = self.coefficients();
-                let [#(#fields),*]: [T; #count] =
-                    ::ga_core::inverse::inverse(&SIGNATURE, &Self::BLADE_MASKS, &x)?.try_into().ok()?;
-                Some(#name { #(#fields),* })
-            }
+            #inverse
         }
 
         #not_impls
