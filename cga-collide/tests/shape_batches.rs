@@ -74,7 +74,6 @@ fn the_first_refused_pose_is_named_with_its_index() {
 
 /// Every named pair function answers as the generic query on the same pair.
 #[test]
-#[ignore = "needs the exact engines of every primitive pair (query/shapes/polytopal.rs)"]
 fn named_pair_functions_answer_as_the_generic_queries() {
     let cube = Cuboid::axis_aligned(Point3::origin(), Vector3::new(1.0, 1.0, 1.0)).unwrap();
     let capsule =

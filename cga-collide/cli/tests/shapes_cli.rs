@@ -78,7 +78,6 @@ fn malformed_lines_name_the_file_and_line() {
 
 /// The example file of the docs: every SHAPE kind, with the exact answers.
 #[test]
-#[ignore = "needs the exact engines of every primitive pair (query/shapes/polytopal.rs, round.rs)"]
 fn the_example_file_is_answered_exactly() {
     let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
     let v = json(&cga(&["shapes", "shapes.jsonl", "--json"], &data));

@@ -78,7 +78,9 @@ pub(super) fn search(a: &Core, b: &Core) -> Found {
     for _ in 0..MAX_STEPS {
         let pts: Vec<P3> = pairs.iter().map(|&p| point(p)).collect();
         let near: Nearest<f64> = nearest_to_origin(&pts, &float_dependent);
-        if !(near.norm2 < last) || !near.norm2.is_finite() {
+        if near.norm2.partial_cmp(&last) != Some(std::cmp::Ordering::Less)
+            || !near.norm2.is_finite()
+        {
             break;
         }
         last = near.norm2;
