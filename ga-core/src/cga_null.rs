@@ -1,7 +1,7 @@
 //! The conformal algebra of 3D space in the null basis `e1, e2, e3, eo, ei` (`eo = n_0`, the
 //! origin; `ei = n_inf`, the point at infinity), with `eo · ei = -1`, `eo² = ei² = 0`.
 //!
-//! It is the same algebra as [`cga`](crate::cga) (Cl(4,1)) in another basis:
+//! It is the same algebra as [`cga`] (Cl(4,1)) in another basis:
 //! `eo = (e5 - e4)/2` and `ei = e4 + e5`, so `e4 = ei/2 - eo` and `e5 = ei/2 + eo`.
 //! [`to_cga`] and [`from_cga`] convert exactly (over any field). Here the conformal objects are
 //! closed at blade level: a translator is `1 + t ei`-type blades only, a motor has 8 blades and
@@ -10,7 +10,7 @@
 //!
 //! Blade names join the basis suffixes: `e12`, `e1i` (= `e1 ∧ ei`), `eoi` (= `eo ∧ ei`),
 //! `e123oi` (the pseudoscalar `I = e1 ∧ e2 ∧ e3 ∧ eo ∧ ei`, which is `-e12345` of
-//! [`cga`](crate::cga), with `I² = -1`). The dual is `A I⁻¹` with this `I`.
+//! [`cga`], with `I² = -1`). The dual is `A I⁻¹` with this `I`.
 //!
 //! ```
 //! use ga_core::cga_null::{self, Motor, Vector};

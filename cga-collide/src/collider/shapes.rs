@@ -162,7 +162,7 @@ impl Collider {
     /// second index is always 0).
     ///
     /// The triangle reported has the least `f64` distance of
-    /// [`query::distance`](crate::query::distance) among the triangles the search examines
+    /// [`query::distance`] among the triangles the search examines
     /// (ties to the smaller index), which skips only triangles proved farther than the best so
     /// far; `distance` and the witnesses are that pair's. The error bound covers the pair's own
     /// bound and every other triangle examined (near-ties). An empty mesh is
