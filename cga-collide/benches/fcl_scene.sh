@@ -14,23 +14,9 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 repeat="${1:-5}"
-if [ -n "${KEEP:-}" ]; then
-  work="$KEEP"
-  mkdir -p "$work"
-else
-  work="$(mktemp -d)"
-  trap 'rm -rf "$work"' EXIT
-fi
-if pkg-config --exists fcl 2>/dev/null; then
-  # pkg-config's own -std=c++11 comes first so that -std=c++17 wins.
-  cflags="$(pkg-config --cflags fcl)"
-  libs="$(pkg-config --libs fcl)"
-else
-  cflags="-I/usr/include/eigen3"
-  libs="-lfcl -lccd -lm"
-fi
-# shellcheck disable=SC2086
-g++ -O3 -DNDEBUG $cflags -std=c++17 "$here/fcl_scene.cpp" -o "$work/fcl_scene" $libs
+# shellcheck source=fcl_build.sh
+source "$here/fcl_build.sh"
+build_fcl_driver "$here/fcl_scene.cpp" "$work/fcl_scene"
 if [ -z "${CGA:-}" ]; then
   cargo build --release -q -p cga-cli --bin cga --manifest-path "$here/../../Cargo.toml"
   CGA="$here/../../target/release/cga"

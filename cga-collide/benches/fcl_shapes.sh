@@ -11,23 +11,9 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 python="${PYTHON:-python3}"
-if [ -n "${KEEP:-}" ]; then
-  work="$KEEP"
-  mkdir -p "$work"
-else
-  work="$(mktemp -d)"
-  trap 'rm -rf "$work"' EXIT
-fi
-if pkg-config --exists fcl 2>/dev/null; then
-  # pkg-config's own -std=c++11 comes first so that -std=c++17 wins.
-  cflags="$(pkg-config --cflags fcl)"
-  libs="$(pkg-config --libs fcl)"
-else
-  cflags="-I/usr/include/eigen3"
-  libs="-lfcl -lccd -lm"
-fi
-# shellcheck disable=SC2086
-g++ -O3 -DNDEBUG $cflags -std=c++17 "$here/fcl_shapes.cpp" -o "$work/fcl_shapes" $libs
+# shellcheck source=fcl_build.sh
+source "$here/fcl_build.sh"
+build_fcl_driver "$here/fcl_shapes.cpp" "$work/fcl_shapes"
 if [ "$#" -eq 0 ]; then
   "$python" "$here/shape_pairs.py" -o "$work/pairs" >/dev/null
   set -- "$work"/pairs/generic/*.jsonl "$work"/pairs/near_contact/*.jsonl
