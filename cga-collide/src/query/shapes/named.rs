@@ -12,7 +12,7 @@
 //! `Result<_, Error>`. `within_distance_*` always returns `Result<bool, Error>`: the clearance
 //! `c` may be refused ([`Error::InvalidClearance`]).
 //!
-//! ```no_run
+//! ```
 //! use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::{Capsule, Cuboid}};
 //! let cube = Cuboid::axis_aligned(Point3::origin(), Vector3::new(1.0, 1.0, 1.0))?;
 //! // The capsule touches the face x = 1 along a segment.
