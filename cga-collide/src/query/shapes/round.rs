@@ -8,7 +8,7 @@
 //! | round – segment, capsule | exact | exact | the segment's parameter against the pieces of the solid grown by `c` (and the radius), each a polynomial condition decided with Sturm sequences ([`segment`], [`univariate`]) |
 //! | round – triangle, cuboid, hull | (above) | `UnsupportedPair` for `c > 0` | not done |
 //! | cylinder – cylinder, parallel axes | exact | exact | interval × disc in a frame along the axis ([`curved`]) |
-//! | cylinder/cone – cylinder/cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside ([`curved`]) |
+//! | cylinder/cone – cylinder/cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside, then a separating plane or a common point suggested in `f64` and proved exactly ([`curved`]) |
 //!
 //! `distance` is certified for the half-space, ball, segment and capsule pairs (an `f64`
 //! estimate, its bound proved by the exact `within_distance`, [`distance`]); the other pairs

@@ -44,6 +44,11 @@ impl Solid {
         }
     }
 
+    /// The middle of the axis, a point of the solid (inside it when the radius is positive).
+    pub(crate) fn centre(&self) -> Vector3<f64> {
+        (self.origin + self.end) * 0.5
+    }
+
     fn scale(&self) -> f64 {
         self.origin.amax().max(self.end.amax()).max(self.radius)
     }
