@@ -210,7 +210,7 @@ fn isolate(p: &Poly, sturm: &[Poly], a: Rational, b: Rational, out: &mut Vec<Roo
             isolate(p, sturm, hi, b, out);
             return;
         }
-        delta = delta / &two;
+        delta /= &two;
     }
 }
 
@@ -272,7 +272,11 @@ mod tests {
         // (t² − 2)² <= 0 only at t = √2; with t <= √2 as t² − 2 <= 0 the set is {√2}.
         let p = poly(&[-2, 0, 1]);
         let sq = p.mul(&p);
-        assert!(exists_all_non_positive(&[sq.clone()], &r(0), &r(2)));
+        assert!(exists_all_non_positive(
+            std::slice::from_ref(&sq),
+            &r(0),
+            &r(2)
+        ));
         assert!(exists_all_non_positive(
             &[sq.clone(), p.clone()],
             &r(0),
@@ -290,9 +294,17 @@ mod tests {
     fn rational_roots_at_midpoints_and_ends() {
         // (t − 1)² <= 0 on [0, 2]: the root 1 is the first midpoint.
         let p = poly(&[1, -2, 1]);
-        assert!(exists_all_non_positive(&[p.clone()], &r(0), &r(2)));
+        assert!(exists_all_non_positive(
+            std::slice::from_ref(&p),
+            &r(0),
+            &r(2)
+        ));
         // On [1, 3] the root is the end.
-        assert!(exists_all_non_positive(&[p.clone()], &r(1), &r(3)));
+        assert!(exists_all_non_positive(
+            std::slice::from_ref(&p),
+            &r(1),
+            &r(3)
+        ));
         // On [2, 3] it is outside.
         assert!(!exists_all_non_positive(&[p], &r(2), &r(3)));
         // (t − 1)(t − 3/2)(t − 2) <= 0 together with t(…) : several roots, one a midpoint.
