@@ -269,3 +269,42 @@ pub(crate) fn within(a: &Shape, b: &Shape, e: &Rational) -> Option<bool> {
         filtered(&sa, ta.round.as_ref()?, &sb, tb.round.as_ref()?, e)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Cylinder;
+    use nalgebra::Point3;
+
+    fn cyl(a: [f64; 3], b: [f64; 3], r: f64) -> Shape {
+        Cylinder::new(Point3::from(a), Point3::from(b), r)
+            .expect("valid")
+            .into()
+    }
+
+    /// Pairs the certificates leave (the closest points of the axis lines are off the first
+    /// axis segment, no end point is inside the other) are settled by the proved filter.
+    #[test]
+    fn the_filter_settles_what_the_certificates_leave() {
+        let post = cyl([0.0, 0.0, 0.0], [0.0, 0.0, 4.0], 1.0);
+        let zero = Rational::zero();
+        // Across the top, overlapping the cap: (0, 0.8, 4) is in both.
+        let over = cyl([-3.0, 0.8, 4.5], [3.0, 0.8, 4.5], 0.9);
+        // Across the top near the rim, 0.0296… above it.
+        let above = cyl([1.5, -3.0, 4.9], [1.5, 3.0, 4.9], 1.0);
+        for (other, expected) in [(&over, true), (&above, false)] {
+            let (ta, tb) = (
+                Tube::of(&post).expect("tube"),
+                Tube::of(other).expect("tube"),
+            );
+            assert_eq!(certify(&ta, &tb, &zero), None, "a certificate applies");
+            assert_eq!(within(&post, other, &zero), Some(expected));
+            assert_eq!(within(other, &post, &zero), Some(expected));
+        }
+        // Within 0.03 of each other, not within 0.029.
+        let near = Rational::new(3.into(), 100.into());
+        let less = Rational::new(29.into(), 1000.into());
+        assert_eq!(within(&post, &above, &near), Some(true));
+        assert_eq!(within(&post, &above, &less), Some(false));
+    }
+}
