@@ -694,3 +694,76 @@ fn certified_distances_to_balls_and_planes() {
         0.0
     );
 }
+
+fn capsule(a: Point3<f64>, b: Point3<f64>, r: f64) -> Shape {
+    cga_collide::shape::Capsule::new(a, b, r).unwrap().into()
+}
+
+#[test]
+fn capsules_on_cylinders_and_cones() {
+    let families = [
+        // Along the side: the capsule's axis at x = t, radius 1/2, against radius 1.
+        Family {
+            name: "capsule along a cylinder's side",
+            t0: 1.5,
+            apart_above: true,
+            build: |s, x| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    capsule(
+                        Point3::new(x, 0.0, s),
+                        Point3::new(x, 0.0, 3.0 * s),
+                        0.5 * s,
+                    ),
+                )
+            },
+        },
+        // Across past the rim, the nearest axis point (3/2, 0, 4 + 3/4)·s is 5/4·s from the
+        // rim circle of radius 1 at height 4: touching at radius 5/4.
+        Family {
+            name: "capsule across a cylinder's rim",
+            t0: 1.25,
+            apart_above: false,
+            build: |s, r| {
+                (
+                    cyl(p(s, 0.0, 0.0, 0.0), p(s, 0.0, 0.0, 4.0), s),
+                    capsule(p(s, 2.0, -4.0, 4.75), p(s, 2.0, 5.0, 4.75), r),
+                )
+            },
+        },
+        // Along a generator of the cone (apex 0, base height 4, radius 3: the generator through
+        // (3/4, 0, 1) and (9/4, 0, 3) has the outward normal (4, 0, −3)/5): the capsule's axis
+        // is that segment moved by (1, 0, −3/4), 5/4 out.
+        Family {
+            name: "capsule along a cone's generator",
+            t0: 1.25,
+            apart_above: false,
+            build: |s, r| {
+                (
+                    cone(Point3::origin(), p(s, 0.0, 0.0, 4.0), 3.0 * s),
+                    capsule(p(s, 1.75, 0.0, 0.25), p(s, 3.25, 0.0, 2.25), r),
+                )
+            },
+        },
+    ];
+    for f in &families {
+        run(f);
+    }
+    // within_distance at the exact threshold, and a certified distance around it.
+    let c = cyl(Point3::origin(), Point3::new(0.0, 0.0, 4.0), 1.0);
+    let k = capsule(
+        Point3::new(2.0, -4.0, 4.75),
+        Point3::new(2.0, 5.0, 4.75),
+        0.25,
+    );
+    assert!(within_distance(&c, &k, 1.0).unwrap());
+    assert!(!within_distance(&k, &c, 1.0f64.next_down()).unwrap());
+    for (x, y) in [(&c, &k), (&k, &c)] {
+        let d = cga_collide::query::distance(x, y).unwrap();
+        assert!(
+            d.distance - d.error_bound <= 1.0 && 1.0 <= d.distance + d.error_bound,
+            "{d:?}"
+        );
+        assert!(d.error_bound < 1e-9, "{d:?}");
+    }
+}

@@ -4,12 +4,15 @@
 //! |---|---|---|---|
 //! | round – half-space | exact | exact | lowest cap disc or apex along the normal; `a + b√c` signs ([`half_space`]) |
 //! | round – ball (and any point-like shape) | exact | exact | meridian half-plane, signs in `Q(√x, √y)` ([`meridian`]) |
-//! | round – segment, triangle, cuboid, hull | exact | exact for `c = 0` only | cylinder: cap disc against the polytope swept by the axis; cone: central projection from the apex ([`section`]) |
+//! | round – segment, triangle, cuboid, hull | exact | exact for `c = 0` | cylinder: cap disc against the polytope swept by the axis; cone: central projection from the apex ([`section`]) |
+//! | round – segment, capsule | exact | exact | the segment's parameter against the pieces of the solid grown by `c` (and the radius), each a polynomial condition decided with Sturm sequences ([`segment`], [`univariate`]) |
+//! | round – triangle, cuboid, hull | (above) | `UnsupportedPair` for `c > 0` | not done |
 //! | cylinder – cylinder, parallel axes | exact | exact | interval × disc in a frame along the axis ([`curved`]) |
-//! | round – capsule, cylinder, cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside ([`curved`]) |
+//! | cylinder/cone – cylinder/cone, otherwise | where an exact certificate applies, else `UnsupportedPair` | same | axis lines apart, slabs missed, closest axis points within the local radii, end points inside, then a separating plane or a common point suggested in `f64` and proved exactly ([`curved`]) |
 //!
-//! `distance` is certified for the half-space and ball pairs (an `f64` estimate, its bound proved
-//! by the exact `within_distance`, [`distance`]); the other pairs return `UnsupportedPair`.
+//! `distance` is certified for the half-space, ball, segment and capsule pairs (an `f64`
+//! estimate, its bound proved by the exact `within_distance`, [`distance`]); the other pairs
+//! return `UnsupportedPair`.
 //!
 //! Shapes that collapse (a zero radius, a capsule with equal ends, a polytope of one point) are
 //! replaced by the segment or point they are, so more pairs answer exactly.
@@ -29,7 +32,9 @@ mod half_space;
 mod meridian;
 mod planar;
 mod section;
+mod segment;
 mod surd;
+mod univariate;
 
 use exact3::{add, point, q, sub, Round, V3};
 
@@ -48,11 +53,13 @@ enum Other {
     /// A ball (radius `0`: a point).
     Ball(Box<V3>, Rational),
     HalfSpace(crate::shape::HalfSpace),
+    /// A capsule: the segment between the two points grown by the radius.
+    Capsule(Box<[V3; 2]>, Rational),
     /// Another curved shape: a cylinder or cone with a positive radius, or a capsule.
     Curved,
 }
 
-fn segment(a: &Point3<f64>, b: &Point3<f64>) -> Other {
+fn segment_of(a: &Point3<f64>, b: &Point3<f64>) -> Other {
     Other::Polytope(vec![point(a), point(b)])
 }
 
@@ -60,7 +67,7 @@ fn other(s: &Shape) -> Other {
     match s {
         Shape::Ball(b) => Other::Ball(Box::new(point(b.centre())), q(b.radius())),
         Shape::HalfSpace(h) => Other::HalfSpace(*h),
-        Shape::Segment(s) => segment(s.a(), s.b()),
+        Shape::Segment(s) => segment_of(s.a(), s.b()),
         Shape::Triangle(t) => Other::Polytope(t.vertices().iter().map(point).collect()),
         Shape::ConvexHull(h) => Other::Polytope(h.points().iter().map(point).collect()),
         Shape::Cuboid(c) => {
@@ -84,11 +91,12 @@ fn other(s: &Shape) -> Other {
             }
             Other::Polytope(corners)
         }
-        Shape::Capsule(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
+        Shape::Capsule(c) if c.radius() == 0.0 => segment_of(c.a(), c.b()),
         Shape::Capsule(c) if c.a() == c.b() => Other::Ball(Box::new(point(c.a())), q(c.radius())),
-        Shape::Cylinder(c) if c.radius() == 0.0 => segment(c.a(), c.b()),
-        Shape::Cone(c) if c.radius() == 0.0 => segment(c.apex(), c.base()),
-        Shape::Capsule(_) | Shape::Cylinder(_) | Shape::Cone(_) => Other::Curved,
+        Shape::Cylinder(c) if c.radius() == 0.0 => segment_of(c.a(), c.b()),
+        Shape::Cone(c) if c.radius() == 0.0 => segment_of(c.apex(), c.base()),
+        Shape::Capsule(c) => Other::Capsule(Box::new([point(c.a()), point(c.b())]), q(c.radius())),
+        Shape::Cylinder(_) | Shape::Cone(_) => Other::Curved,
     }
 }
 
@@ -116,6 +124,8 @@ fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
         Other::Ball(centre, radius) => Some(meridian::point_within(r, &centre, &(radius + e))),
         Other::HalfSpace(h) => Some(half_space::within(r, &h, e)),
         Other::Polytope(vertices) if e.is_zero() => Some(section::meets_polytope(r, &vertices)),
+        Other::Polytope(v) if v.len() == 2 => Some(segment::within(r, &v[0], &v[1], e)),
+        Other::Capsule(ends, radius) => Some(segment::within(r, &ends[0], &ends[1], &(radius + e))),
         Other::Polytope(_) | Other::Curved => None,
     }
 }
@@ -159,6 +169,8 @@ fn distance_round_first(
     match other {
         Shape::Ball(b) => Some(distance::to_ball(&s, b, within)),
         Shape::HalfSpace(h) => Some(distance::to_half_space(&s, h, within)),
+        Shape::Capsule(c) => Some(distance::to_segment(&s, c.a(), c.b(), c.radius(), within)),
+        Shape::Segment(g) => Some(distance::to_segment(&s, g.a(), g.b(), 0.0, within)),
         _ => None,
     }
 }

@@ -1,4 +1,6 @@
-//! Curved against curved: a cylinder or cone against a cylinder, cone or capsule.
+//! Curved against curved: a cylinder or cone against a cylinder or cone (a capsule is decided
+//! exactly before it gets here, as its axis segment grown by its radius; the certificates below
+//! still accept one).
 //!
 //! * Parallel cylinders are exact: in a frame along the common axis both are an interval times
 //!   a disc, so they are within `e` iff the axial gap `g` and the gap between the discs `δ`
@@ -9,6 +11,11 @@
 //!   between the other's end planes (grown by `e`); meeting if the closest points of the two
 //!   axis lines lie on both axis segments within the sum of the local radii and `e` (the
 //!   segment between them crosses both solids), or if an end point of one lies in the other.
+//! * Then a filter: approximate nearest points `x ∈ a`, `y ∈ b` (alternating projections in
+//!   `f64`) suggest a plane between them, proved separating by the exact half-space tests, or
+//!   points near them, proved to lie in `a` and within `e` of `b` by the exact point tests.
+//!   Either proof settles the pair; a pair that touches or nearly does gets neither.
+//!
 //!   When no certificate applies the pair is left undecided (`None`), never guessed.
 
 use core::cmp::Ordering;
@@ -16,6 +23,7 @@ use core::cmp::Ordering;
 use ga_core::scalar::Rational;
 use num_traits::{One, Signed, Zero};
 
+use super::distance::Solid;
 use super::exact3::{add, cross, dot, norm2, point, q, scale, sub, Round, V3};
 use super::half_space::{point_within_plane, within_plane};
 use super::meridian;
@@ -200,6 +208,52 @@ fn certify(a: &Tube, b: &Tube, e: &Rational) -> Option<bool> {
     None
 }
 
+/// Alternating projections between the two solids: for disjoint convex sets they converge to
+/// a nearest pair, for overlapping ones to a common point.
+const PROJECTIONS: usize = 64;
+
+/// How far candidate common points are moved from the approximate contact into each solid.
+const INWARD: [f64; 5] = [0.0, 1e-9, 1e-6, 1e-3, 0.05];
+
+fn exact(v: &nalgebra::Vector3<f64>) -> V3 {
+    [q(v.x), q(v.y), q(v.z)]
+}
+
+/// The `f64` filter of the module documentation, on two cylinders or cones.
+fn filtered(sa: &Solid, ra: &Round, sb: &Solid, rb: &Round, e: &Rational) -> Option<bool> {
+    let mut y = sb.centre();
+    let mut x = sa.nearest(&y);
+    for _ in 0..PROJECTIONS {
+        y = sb.nearest(&x);
+        x = sa.nearest(&y);
+    }
+    if !(x.iter().chain(y.iter()).all(|c| c.is_finite())) {
+        return None;
+    }
+    let u = y - x;
+    let gap = u.norm();
+    let ef = num_traits::ToPrimitive::to_f64(e).unwrap_or(f64::INFINITY);
+    if gap.is_finite() && gap > ef {
+        // The plane through the middle of what is left of the gap once `e` is taken off.
+        let on = exact(&(x + u * (0.5 * (1.0 - ef / gap))));
+        let normal = exact(&u);
+        let back = scale(&normal, &-Rational::one());
+        if !within_plane(ra, &on, &back, &Rational::zero()) && !within_plane(rb, &on, &normal, e) {
+            return Some(false);
+        }
+    }
+    let zero = Rational::zero();
+    for (p, centre) in [(x, sa.centre()), (y, sb.centre())] {
+        for s in INWARD {
+            let c = exact(&(p + (centre - p) * s));
+            if meridian::point_within(ra, &c, &zero) && meridian::point_within(rb, &c, e) {
+                return Some(true);
+            }
+        }
+    }
+    None
+}
+
 /// Exact: is `a` within `e` of `b` (each a cylinder, cone or capsule, at least one not a
 /// capsule)? `None` when no exact method applies yet.
 pub(crate) fn within(a: &Shape, b: &Shape, e: &Rational) -> Option<bool> {
@@ -210,5 +264,47 @@ pub(crate) fn within(a: &Shape, b: &Shape, e: &Rational) -> Option<bool> {
     {
         return Some(parallel_cylinders(&ta, &tb, e));
     }
-    certify(&ta, &tb, e)
+    certify(&ta, &tb, e).or_else(|| {
+        let (sa, sb) = (super::solid(a)?, super::solid(b)?);
+        filtered(&sa, ta.round.as_ref()?, &sb, tb.round.as_ref()?, e)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Cylinder;
+    use nalgebra::Point3;
+
+    fn cyl(a: [f64; 3], b: [f64; 3], r: f64) -> Shape {
+        Cylinder::new(Point3::from(a), Point3::from(b), r)
+            .expect("valid")
+            .into()
+    }
+
+    /// Pairs the certificates leave (the closest points of the axis lines are off the first
+    /// axis segment, no end point is inside the other) are settled by the proved filter.
+    #[test]
+    fn the_filter_settles_what_the_certificates_leave() {
+        let post = cyl([0.0, 0.0, 0.0], [0.0, 0.0, 4.0], 1.0);
+        let zero = Rational::zero();
+        // Across the top, overlapping the cap: (0, 0.8, 4) is in both.
+        let over = cyl([-3.0, 0.8, 4.5], [3.0, 0.8, 4.5], 0.9);
+        // Across the top near the rim, 0.0296… above it.
+        let above = cyl([1.5, -3.0, 4.9], [1.5, 3.0, 4.9], 1.0);
+        for (other, expected) in [(&over, true), (&above, false)] {
+            let (ta, tb) = (
+                Tube::of(&post).expect("tube"),
+                Tube::of(other).expect("tube"),
+            );
+            assert_eq!(certify(&ta, &tb, &zero), None, "a certificate applies");
+            assert_eq!(within(&post, other, &zero), Some(expected));
+            assert_eq!(within(other, &post, &zero), Some(expected));
+        }
+        // Within 0.03 of each other, not within 0.029.
+        let near = Rational::new(3.into(), 100.into());
+        let less = Rational::new(29.into(), 1000.into());
+        assert_eq!(within(&post, &above, &near), Some(true));
+        assert_eq!(within(&post, &above, &less), Some(false));
+    }
 }

@@ -1,16 +1,20 @@
 //! Certified distances where the exact `within_distance` always decides: a cylinder or cone
-//! against a ball (or a point) and against a half-space.
+//! against a ball (or a point), a half-space, a segment or a capsule.
 //!
 //! The distance and witnesses are computed in `f64` (the nearest point in the meridian
-//! half-plane, or the lowest point along the half-space's normal); the bound is then proved by
-//! the exact `within_distance` tests on either side of the value, widened until they agree
-//! (the crate's usual certification).
+//! half-plane, the lowest point along the half-space's normal, or the nearest point along a
+//! segment, where the distance to the convex solid is a convex function); the bound is then
+//! proved by the exact `within_distance` tests on either side of the value, widened until they
+//! agree (the crate's usual certification).
 
 use nalgebra::{Point3, Vector3};
 
 use crate::query::distance::certify;
 use crate::query::CertifiedDistance;
 use crate::shape::{Ball, Cone, Cylinder, HalfSpace};
+
+/// Golden-section steps along a segment: enough to shrink `[0, 1]` below `f64` resolution.
+const SECTION_STEPS: usize = 90;
 
 /// A cylinder or cone in `f64`: axis origin (a cylinder's `a`, a cone's apex), axis end, radius.
 #[derive(Clone, Copy)]
@@ -40,12 +44,17 @@ impl Solid {
         }
     }
 
+    /// The middle of the axis, a point of the solid (inside it when the radius is positive).
+    pub(crate) fn centre(&self) -> Vector3<f64> {
+        (self.origin + self.end) * 0.5
+    }
+
     fn scale(&self) -> f64 {
         self.origin.amax().max(self.end.amax()).max(self.radius)
     }
 
     /// The point of the solid nearest to `v` (in `f64`).
-    fn nearest(&self, v: &Vector3<f64>) -> Vector3<f64> {
+    pub(crate) fn nearest(&self, v: &Vector3<f64>) -> Vector3<f64> {
         let d = self.end - self.origin;
         let h = d.norm();
         let axis = d / h;
@@ -171,6 +180,51 @@ pub(crate) fn to_half_space(
         (0.0, x)
     };
     let scale = s.scale().max(h.point().coords.amax());
+    let bound = certify(distance, scale, || within(0.0), &within, &within);
+    result(distance, bound, x, y)
+}
+
+/// The solid against the segment `[p, q]` grown by `radius` (a capsule; `0` for a segment);
+/// `within(c)` is the exact test.
+pub(crate) fn to_segment(
+    s: &Solid,
+    p: &Point3<f64>,
+    q: &Point3<f64>,
+    radius: f64,
+    within: impl Fn(f64) -> bool,
+) -> CertifiedDistance {
+    let (p, q) = (p.coords, q.coords);
+    let at = |t: f64| p + (q - p) * t;
+    let gap = |t: f64| {
+        let v = at(t);
+        (v - s.nearest(&v)).norm()
+    };
+    // The distance to a convex set is convex along a line: golden-section search.
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..SECTION_STEPS {
+        let (m1, m2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+        if gap(m1) <= gap(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    let t = [0.0, 1.0, 0.5 * (lo + hi)]
+        .into_iter()
+        .fold(
+            0.5 * (lo + hi),
+            |best, t| if gap(t) < gap(best) { t } else { best },
+        );
+    let v = at(t);
+    let x = s.nearest(&v);
+    let d = (v - x).norm();
+    let (distance, y) = if d > radius {
+        (d - radius, v + (x - v) * (radius / d))
+    } else {
+        (0.0, x)
+    };
+    let scale = s.scale().max(p.amax()).max(q.amax()).max(radius);
     let bound = certify(distance, scale, || within(0.0), &within, &within);
     result(distance, bound, x, y)
 }
