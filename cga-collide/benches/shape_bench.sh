@@ -14,7 +14,9 @@
 # Usage: bash cga-collide/benches/shape_bench.sh [OUT]   (default OUT: ./shape_bench)
 # Environment: PYTHON (default python3), REPEAT (calls per pair, default 200), GEN_ARGS
 #   (extra shape_pairs.py options, e.g. "--scaled=-320,320"), CGA (path of the cga binary,
-#   default: built here with cargo, release), SKIP_CGA=1 to run the peers only.
+#   default: built here with cargo, release), SKIP_CGA=1 to run the peers only, PAIRS=REGEX
+#   to time only the pair types whose file name matches (grep -E; e.g. "cylinder|cone" or,
+#   with GREP_V=1, all but those).
 # A file `cga shapes` refuses (a pair type without an exact test yet) is reported on stderr
 # and left out of our native column; the other files still run.
 set -euo pipefail
@@ -33,6 +35,9 @@ for family in generic near_contact near_contact_scaled; do
     files+=("$out/$family"/*.jsonl)
   fi
 done
+if [ -n "${PAIRS:-}" ]; then
+  mapfile -t files < <(printf '%s\n' "${files[@]}" | grep -E ${GREP_V:+-v} "$PAIRS")
+fi
 results=()
 if [ -z "${SKIP_CGA:-}" ]; then
   if [ -z "${CGA:-}" ]; then

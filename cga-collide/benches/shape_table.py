@@ -110,7 +110,7 @@ def main():
     for w, c in costs.items():
         print(f"- {w} call cost (two far spheres, same calling shape; per pair type "
               f"{min(c):.2f} to {max(c):.2f} µs)"
-              + ("; coal's net time (pair minus the call cost timed next to it) in brackets"
+              + (f"; {w}'s net time (pair minus the call cost timed next to it) in brackets"
                  if w in ("coal", "cga-py") else ""))
 
 
