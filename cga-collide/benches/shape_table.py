@@ -11,7 +11,8 @@ brackets the wrong answers among pairs whose peer input is exactly the same soli
 name (FAMILY/A-B.jsonl) with "who": "cga", their time is micros_median (else micros_mean), and their answers are
 checked against the file's `expected` when the file is still there.
 
-Usage: python3 shape_table.py RESULTS.jsonl... [--families generic,near_contact]
+Usage: python3 shape_table.py RESULTS.jsonl... [--families generic,near_contact] [--times]
+--times: the time columns only, with ours' (native) near-contact time over its generic time.
 """
 import argparse
 import json
@@ -74,6 +75,8 @@ def main():
     ap = argparse.ArgumentParser(description="Markdown table of the shape benchmarks")
     ap.add_argument("files", nargs="+")
     ap.add_argument("--families", default="generic,near_contact")
+    ap.add_argument("--times", action="store_true",
+                    help="time columns only, and ours' near-contact/generic ratio")
     args = ap.parse_args()
     families = args.families.split(",")
     data, costs = {}, {}
@@ -87,15 +90,23 @@ def main():
     for fam in families:
         for w in whos:
             head.append(f"{w} µs {fam}")
-        for w in whos:
-            head.append(f"{w} wrong {fam}")
+        if not args.times:
+            for w in whos:
+                head.append(f"{w} wrong {fam}")
+    if args.times and "cga" in whos and len(families) > 1:
+        head.append(f"cga {families[1]} / {families[0]}")
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))
     for pair in pairs:
         row = [pair]
         for fam in families:
             row += [cell_time(data.get((w, pair, fam))) for w in whos]
-            row += [cell_wrong(data.get((w, pair, fam))) for w in whos]
+            if not args.times:
+                row += [cell_wrong(data.get((w, pair, fam))) for w in whos]
+        if args.times and "cga" in whos and len(families) > 1:
+            g, n = (data.get(("cga", pair, f)) for f in families[:2])
+            ok = g and n and g.get("micros_median") and n.get("micros_median") is not None
+            row.append(f"{n['micros_median'] / g['micros_median']:.1f}×" if ok else "n/a")
         print("| " + " | ".join(row) + " |")
     print()
     for fam in families:
