@@ -2,15 +2,17 @@
 """A Markdown table from the JSON lines of coal_shapes.py, fcl_shapes.sh and `cga shapes`
 (the lines of each, concatenated, in any order), one row per pair type.
 
-Per peer ("who") and family: µs per pair test (median over the pair type's pairs; for coal
-the Python call cost is shown under the table, and the time net of it in brackets) and,
+Per peer ("who": cga native, cga-py from Python, coal from Python, fcl) and family: µs per
+pair test (median over the pair type's pairs; for the Python sides the call cost is shown
+under the table, and the time net of it in brackets) and,
 for the near-contact family, wrong answers as "wrong/pairs" (false collisions + missed; in
 brackets the wrong answers among pairs whose peer input is exactly the same solid). Lines of
 `cga shapes` ({"file", "pairs", "answers", "micros_mean", ...}) are placed by their file
-name (FAMILY/A-B.jsonl) with "who": "cga", their time is micros_mean, and their answers are
+name (FAMILY/A-B.jsonl) with "who": "cga", their time is micros_median (else micros_mean), and their answers are
 checked against the file's `expected` when the file is still there.
 
-Usage: python3 shape_table.py RESULTS.jsonl... [--families generic,near_contact]
+Usage: python3 shape_table.py RESULTS.jsonl... [--families generic,near_contact] [--times]
+--times: the time columns only, with ours' (native) near-contact time over its generic time.
 """
 import argparse
 import json
@@ -30,7 +32,8 @@ def rows_of(paths):
                     family = os.path.basename(os.path.dirname(d["file"]))
                     pair = os.path.basename(d["file"]).removesuffix(".jsonl")
                     d = {"who": "cga", "pair": pair, "family": family, "pairs": d["pairs"],
-                         "micros_median": d.get("micros_mean"), "micros_call_cost": None,
+                         "micros_median": d.get("micros_median", d.get("micros_mean")),
+                         "micros_call_cost": None,
                          "wrong": wrong_against_file(d["file"], d.get("answers"))}
                 yield d
 
@@ -50,7 +53,7 @@ def cell_time(d):
     if d is None or d.get("micros_median") is None:
         return "n/a"
     t = f"{d['micros_median']:.2f}"
-    if d.get("micros_net") is not None and d["who"] == "coal":
+    if d.get("micros_net") is not None and d["who"] in ("coal", "cga-py"):
         t += f" ({d['micros_net']:.2f})"
     return t
 
@@ -72,6 +75,8 @@ def main():
     ap = argparse.ArgumentParser(description="Markdown table of the shape benchmarks")
     ap.add_argument("files", nargs="+")
     ap.add_argument("--families", default="generic,near_contact")
+    ap.add_argument("--times", action="store_true",
+                    help="time columns only, and ours' near-contact/generic ratio")
     args = ap.parse_args()
     families = args.families.split(",")
     data, costs = {}, {}
@@ -79,21 +84,29 @@ def main():
         data[(d["who"], d["pair"], d["family"])] = d
         if d.get("micros_call_cost") is not None:
             costs.setdefault(d["who"], []).append(d["micros_call_cost"])
-    whos = [w for w in ("cga", "coal", "fcl") if any(k[0] == w for k in data)]
+    whos = [w for w in ("cga", "cga-py", "coal", "fcl") if any(k[0] == w for k in data)]
     pairs = sorted({k[1] for k in data})
     head = ["pair"]
     for fam in families:
         for w in whos:
             head.append(f"{w} µs {fam}")
-        for w in whos:
-            head.append(f"{w} wrong {fam}")
+        if not args.times:
+            for w in whos:
+                head.append(f"{w} wrong {fam}")
+    if args.times and "cga" in whos and len(families) > 1:
+        head.append(f"cga {families[1]} / {families[0]}")
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))
     for pair in pairs:
         row = [pair]
         for fam in families:
             row += [cell_time(data.get((w, pair, fam))) for w in whos]
-            row += [cell_wrong(data.get((w, pair, fam))) for w in whos]
+            if not args.times:
+                row += [cell_wrong(data.get((w, pair, fam))) for w in whos]
+        if args.times and "cga" in whos and len(families) > 1:
+            g, n = (data.get(("cga", pair, f)) for f in families[:2])
+            ok = g and n and g.get("micros_median") and n.get("micros_median") is not None
+            row.append(f"{n['micros_median'] / g['micros_median']:.1f}×" if ok else "n/a")
         print("| " + " | ".join(row) + " |")
     print()
     for fam in families:
@@ -108,8 +121,8 @@ def main():
     for w, c in costs.items():
         print(f"- {w} call cost (two far spheres, same calling shape; per pair type "
               f"{min(c):.2f} to {max(c):.2f} µs)"
-              + ("; coal's net time (pair minus the call cost timed next to it) in brackets"
-                 if w == "coal" else ""))
+              + (f"; {w}'s net time (pair minus the call cost timed next to it) in brackets"
+                 if w in ("coal", "cga-py") else ""))
 
 
 if __name__ == "__main__":

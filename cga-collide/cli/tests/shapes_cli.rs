@@ -55,6 +55,26 @@ fn answers_come_in_file_order_one_object_a_file() {
 }
 
 #[test]
+fn repeat_times_loops_and_keeps_the_answers() {
+    let dir = temp_dir("shapes-repeat");
+    std::fs::write(dir.join("basic.jsonl"), BASIC).unwrap();
+    let out = cga(&["shapes", "basic.jsonl", "--json", "--repeat", "10"], &dir);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(String::from_utf8(out.stdout).unwrap().trim()).unwrap();
+    assert_eq!(v["answers"], json!([true, false, true, false, true]));
+    let (median, max) = (
+        v["micros_median"].as_f64().unwrap(),
+        v["micros_max"].as_f64().unwrap(),
+    );
+    assert!(0.0 <= median && median <= max, "{v}");
+}
+
+#[test]
 fn malformed_lines_name_the_file_and_line() {
     let dir = temp_dir("shapes-bad");
     let ball = r#"{"ball": {"center": [0, 0, 0], "radius": 1}}"#;

@@ -10,13 +10,16 @@
 //! separating direction, a pair of near points or a tetrahedron around the origin, and each
 //! proposal is checked with rigorous error bounds ([`certificate`]); a proposal that checks
 //! proves the answer. When none checks (touching, a few ulps apart, degenerate input), the
-//! same search runs in exact rationals ([`gjk::exact_distance2`]), warm-started from the
+//! last simplex is tested exactly as the nearest feature pair ([`feature`]: a few polynomial
+//! signs on `f64` expansions). Only when that proves neither answer does the
+//! same search run in exact rationals ([`gjk::exact_distance2`]), warm-started from the
 //! floating-point simplex, and gives the exact squared distance of the cores, compared with
 //! `S²` exactly. Half-spaces are decided by their support functions ([`half_space`]). The
 //! pairs of balls, triangles and segments keep the crate's exact tests.
 
 mod certificate;
 mod cores;
+mod feature;
 mod gjk;
 mod half_space;
 mod simplex;
@@ -143,6 +146,9 @@ fn cores_within(a: &Core, b: &Core, c: f64) -> bool {
     }
     if !far && certificate::apart(a, b, &found.v, &s) {
         return false;
+    }
+    if let Some(answer) = feature::decide(a, b, &found.pairs, s) {
+        return answer;
     }
     let d2 = gjk::exact_distance2(a, b, &found.pairs);
     let reach = q(s[0]) + q(s[1]) + q(s[2]);

@@ -5,6 +5,8 @@ use ga_core::scalar::{rational_from_f64, Rational, Ring};
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 
+use super::cores::Core;
+use super::feature;
 use super::{distance, intersects, within_distance};
 use crate::query::exact_distance_triangle_triangle;
 use crate::shape::{Ball, Capsule, ConvexHull, Cuboid, HalfSpace, Segment, Shape, Triangle};
@@ -521,6 +523,69 @@ proptest! {
         prop_assert!(within_distance(&a, &b, d.distance + d.error_bound));
         if d.distance > d.error_bound {
             prop_assert!(!within_distance(&a, &b, d.distance - d.error_bound));
+        }
+    }
+}
+
+/// The exact answer of the rational search for two grown cores.
+fn rational_within(a: &Core, b: &Core, c: f64) -> bool {
+    let d2 = super::gjk::exact_distance2(a, b, &[]);
+    let s = q(a.radius) + q(b.radius) + q(c);
+    d2 <= &s * &s
+}
+
+#[test]
+fn the_feature_stage_decides_constructed_contacts() {
+    // Flush faces, an edge on a face, a vertex on a ball, a capsule on a face: touching, and
+    // one ulp apart, each decided by the feature stage without the rational search.
+    let a = aabb(p(0.0, 0.0, 0.0), 1.0);
+    let pairs = [
+        (aabb(p(0.5, 0.25, 2.0), 1.0), 0.0, true),
+        (aabb(p(0.5, 0.25, 2f64.next_up()), 1.0), 0.0, false),
+        (capsule(p(-1.0, 0.0, 3.0), p(1.0, 0.0, 3.0), 2.0), 0.0, true),
+        (
+            capsule(p(-1.0, 0.0, 3.0), p(1.0, 0.0, 3.0), 2f64.next_down()),
+            0.0,
+            false,
+        ),
+        (ball(p(2.0, 2.0, 2.0), 3f64.sqrt()), 0.0, false),
+        (ball(p(3.0, 0.0, 0.0), 1.0), 1.0, true),
+    ];
+    for (b, c, expected) in pairs {
+        let (ca, cb) = (Core::of(&a).unwrap(), Core::of(&b).unwrap());
+        let found = super::gjk::search(&ca, &cb);
+        let answer = feature::decide(&ca, &cb, &found.pairs, [ca.radius, cb.radius, c]);
+        assert_eq!(answer, Some(expected), "{b:?} at clearance {c}");
+        assert_eq!(within_distance(&a, &b, c), expected);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Whatever simplex it is given (the search's, or any pairs of core points), the feature
+    /// stage's answer, when it gives one, is the exact one.
+    #[test]
+    fn the_feature_stage_is_never_wrong(
+        a in shape(),
+        b in shape(),
+        c in radius(),
+        picks in prop::collection::vec((0usize..8, 0usize..8), 1..5),
+    ) {
+        let (Some(ca), Some(cb)) = (Core::of(&a), Core::of(&b)) else {
+            return Ok(());
+        };
+        let truth = rational_within(&ca, &cb, c);
+        let reach = [ca.radius, cb.radius, c];
+        let found = super::gjk::search(&ca, &cb);
+        if let Some(answer) = feature::decide(&ca, &cb, &found.pairs, reach) {
+            prop_assert_eq!(answer, truth, "{:?} {:?} {}", a, b, c);
+        }
+        let mut pairs: Vec<(usize, usize)> =
+            picks.iter().map(|&(i, j)| (i % ca.len(), j % cb.len())).collect();
+        pairs.dedup();
+        if let Some(answer) = feature::decide(&ca, &cb, &pairs, reach) {
+            prop_assert_eq!(answer, truth, "{:?} {:?} {} {:?}", a, b, c, pairs);
         }
     }
 }
