@@ -114,3 +114,20 @@ fn constants_fold() {
     let m = translate_x(2.0);
     assert_eq!(m, Motor::translator([2.0, 0.0, 0.0]));
 }
+
+#[test]
+fn symbolic_and_lane_scalars() {
+    use ga_core::scalar::lanes::F64x4;
+    use ga_core::symbolic::Poly;
+    let names = ["s", "a", "b", "c", "d", "e", "f", "g"];
+    let m = Motor::from_coefficients(names.map(Poly::var));
+    let x = Vector::from_coefficients(["x1", "x2", "x3", "xo", "xi"].map(Poly::var));
+    // The fused kernels are the same polynomials as the product-by-product evaluation.
+    assert_eq!(apply_method(&m, &x), m.sandwich_unit(&x));
+    assert_eq!(compose(&m, &m.reverse()), m.clone() * m.reverse());
+    let full = m.clone() * x.clone() * m.reverse();
+    assert_eq!(apply(&m, &x), Vector::from_multivector(&full.into()));
+    // Four values at once.
+    let lanes = up(F64x4::splat(1.0), F64x4::splat(2.0), F64x4::splat(3.0));
+    assert_eq!(lanes, cga_null::up_generic(1.0, 2.0, 3.0).map(F64x4::splat));
+}
