@@ -24,6 +24,12 @@ ga_core::cga_null_expressions! {
         let x3 = x2 * x;
         1 + x + x2 / 2 + x3 / 6 + x3 * x / 24
     }
+    /// The same series for an argument declared a blade (`x x` is a scalar).
+    fn expp_blade(#[blade] x: Line) -> Motor {
+        let x2 = x * x;
+        let x3 = x2 * x;
+        1 + x + x2 / 2 + x3 / 6 + x3 * x / 24
+    }
     /// A chain step: the joint motor about a line and the line it moves.
     fn step(#[versor] m: Motor, l: Line, next: Line, angle: T) -> (Motor, Line) {
         let r = expp(l * (angle / 2));
@@ -86,6 +92,16 @@ proptest! {
         one.s = q(16);
         let series = one + Motor::from(line.clone()) + x2.scale(&q(8)) + x3.scale(&Rational::new(1.into(), 6.into())) + x4.scale(&Rational::new(1.into(), 24.into()));
         prop_assert_eq!(expp(&line), series.clone());
+        // A true line (a blade): the dual of `P ∧ Q ∧ ei`.
+        let (p1, p2) = (cga_null::up_generic(q(l[0]), q(l[1]), q(l[2])), cga_null::up_generic(q(l[3]), q(l[4]), q(l[5])));
+        let blade = Line::from_multivector(&(!(p1 ^ p2 ^ cga_null::ei())).into());
+        let b2: Motor<Rational> = blade.clone() * blade.clone();
+        let b3: Motor<Rational> = b2.clone() * blade.clone();
+        let b4: Motor<Rational> = b3.clone() * blade.clone();
+        let mut one = Motor::zero();
+        one.s = q(16);
+        let blade_series = one + Motor::from(blade.clone()) + b2.scale(&q(8)) + b3.scale(&Rational::new(1.into(), 6.into())) + b4.scale(&Rational::new(1.into(), 24.into()));
+        prop_assert_eq!(expp_blade(&blade), blade_series);
         let next = Line::from_coefficients(n.map(q));
         let half = q(angle) / q(32);
         let r = expp(&line.scale(&half));

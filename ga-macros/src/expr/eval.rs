@@ -26,13 +26,16 @@ pub struct Compiler<'a> {
     pub prog: Program,
     pub fns: &'a HashMap<String, &'a syn::ItemFn>,
     depth: usize,
+    /// The declared blades' squares `⟨B B⟩₀` (see [`Value::multiple`]).
+    blade_squares: Vec<Poly>,
 }
 
 fn err(span: &impl ToTokens, msg: impl std::fmt::Display) -> syn::Error {
     syn::Error::new_spanned(span, msg)
 }
 
-/// `#[versor]` or `#[unit]` on a parameter.
+/// `#[versor]` or `#[unit]` on a parameter (`#[blade]` is read by
+/// [`Compiler::declare_blade`]).
 pub fn is_versor_attr(attrs: &[syn::Attribute]) -> bool {
     attrs
         .iter()
@@ -134,6 +137,21 @@ impl<'a> Compiler<'a> {
             prog: Program::default(),
             fns,
             depth: 0,
+            blade_squares: Vec::new(),
+        }
+    }
+
+    /// Gives a `#[blade]` argument its blade number (its square is a scalar).
+    pub fn declare_blade(&mut self, v: Value, attrs: &[syn::Attribute]) -> Value {
+        if !attrs.iter().any(|a| a.path().is_ident("blade")) {
+            return v;
+        }
+        let square = product(self.alg, &mut self.prog, Product::ScalarProduct, &v, &v);
+        self.blade_squares
+            .push(square.coeffs.get(&0).cloned().unwrap_or_default());
+        Value {
+            multiple: Some((self.blade_squares.len() - 1, Poly::constant(Q::one()))),
+            ..v
         }
     }
 
@@ -230,7 +248,14 @@ impl<'a> Compiler<'a> {
             Expr::Unary(u) => {
                 let v = self.expr(&u.expr, scope)?;
                 match u.op {
-                    UnOp::Neg(_) => Ok(v.map_signs(|_| -1)),
+                    UnOp::Neg(_) => {
+                        let m = v.multiple.clone();
+                        let neg = v.map_signs(|_| -1);
+                        Ok(Value {
+                            multiple: m.map(|(i, f)| (i, f.scale(&-Q::one()))),
+                            ..neg
+                        })
+                    }
                     UnOp::Not(_) => Ok(linear(alg, &v, &|b| alg.dual_blade(b))),
                     UnOp::Deref(_) => Ok(v),
                     _ => Err(err(u, "unsupported operator")),
@@ -313,6 +338,16 @@ impl<'a> Compiler<'a> {
             BinOp::BitAnd(_) => Product::Regressive,
             _ => return Err(err(b, "unsupported operator")),
         };
+        // Two multiples of one declared blade: `f B f' B = f f' B²`, a scalar.
+        if let (Product::Geometric, Some((i, f)), Some((j, g))) = (kind, &l.multiple, &r.multiple) {
+            if i == j {
+                let fg = Value::scalar(f.clone()).scale(g, &mut self.prog);
+                return Ok(
+                    Value::scalar(fg.coeffs.get(&0).cloned().unwrap_or_default())
+                        .scale(&self.blade_squares[*i].clone(), &mut self.prog),
+                );
+            }
+        }
         // A scalar factor keeps the other operand's type (and versor-ness).
         if let (Product::Geometric, Some(s)) = (kind, l.as_scalar()) {
             if l.ty == Output::Scalar {
@@ -386,6 +421,7 @@ impl<'a> Compiler<'a> {
             let v = self.expr(arg, scope)?;
             let mut v = self.fit(v, ty, arg, "this argument")?;
             v.versor |= is_versor_attr(&pt.attrs);
+            let v = self.declare_blade(v, &pt.attrs);
             inner.insert(id.ident.to_string(), v);
         }
         self.depth += 1;
@@ -429,13 +465,16 @@ impl<'a> Compiler<'a> {
             return Ok(product(alg, &mut self.prog, kind, &recv, &rhs));
         }
         match name.as_str() {
-            "reverse" | "grade_involution" | "conjugate" | "clone" => {
+            "clone" => {
+                arity(0)?;
+                Ok(recv)
+            }
+            "reverse" | "grade_involution" | "conjugate" => {
                 arity(0)?;
                 Ok(match name.as_str() {
                     "reverse" => recv.map_signs(blade::reverse_sign),
                     "grade_involution" => recv.map_signs(blade::involution_sign),
-                    "conjugate" => recv.map_signs(blade::conjugate_sign),
-                    _ => recv,
+                    _ => recv.map_signs(blade::conjugate_sign),
                 })
             }
             "dual" => {

@@ -111,9 +111,11 @@ fn emit_fn(
                     coeffs,
                     ty,
                     versor: is_versor_attr(&pt.attrs),
+                    multiple: None,
                 }
             }
         };
+        let value = c.declare_blade(value, &pt.attrs);
         scope.insert(ident.to_string(), value);
     }
     let returns: Vec<Type> = match &f.sig.output {
@@ -206,10 +208,16 @@ fn emit_fn(
         (ret_types[0].clone(), values.remove(0))
     };
     let attrs = &f.attrs;
+    let cost = format!(
+        "Generated whole by the expression compiler: {} multiplications, {} additions.",
+        em.multiplications, em.additions
+    );
     let vis = &f.vis;
     let name = &f.sig.ident;
     Ok(quote! {
         #(#attrs)*
+        #[doc = ""]
+        #[doc = #cost]
         #[allow(unused_variables, unused_parens, clippy::too_many_arguments, clippy::double_parens, clippy::neg_multiply, clippy::let_and_return)]
         #vis fn #name<T: #bound>(#(#params),*) -> #ret {
             #(#constants)*

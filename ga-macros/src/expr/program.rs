@@ -133,6 +133,9 @@ pub struct Emitted {
     /// Constants other than `±1`, each bound once.
     constants: Vec<(Q, Ident)>,
     pub needs_field: bool,
+    /// Multiplications and additions (subtractions included) of everything rendered.
+    pub multiplications: usize,
+    pub additions: usize,
 }
 
 impl Emitted {
@@ -163,7 +166,10 @@ impl Emitted {
     pub fn render(&mut self, p: &Poly) -> syn::Result<TokenStream> {
         let ring = quote!(::ga_core::scalar::Ring);
         let mut out = TokenStream::new();
+        self.additions += p.0.len().saturating_sub(1);
         for (k, (m, c)) in p.0.iter().enumerate() {
+            self.multiplications +=
+                m.len().saturating_sub(1) + usize::from(!m.is_empty() && !c.abs().is_one());
             let factors: Vec<TokenStream> = m
                 .iter()
                 .map(|&a| {

@@ -17,6 +17,9 @@ pub struct Value {
     pub ty: Output,
     /// Declared (or derived) to be a versor: `V X Ṽ` keeps the grades of `X`.
     pub versor: bool,
+    /// `factor · B` for the declared blade `B` number `.0` (a `#[blade]` argument): the product
+    /// of two multiples of one blade is the scalar `factor · factor' · B²`.
+    pub multiple: Option<(usize, Poly)>,
 }
 
 fn set_of(alg: &Algebra, ty: Output) -> BladeSet {
@@ -36,6 +39,7 @@ impl Value {
             coeffs,
             ty: Output::Scalar,
             versor: false,
+            multiple: None,
         }
     }
 
@@ -48,6 +52,7 @@ impl Value {
             coeffs,
             ty: Output::Scalar,
             versor: false,
+            multiple: None,
         }
     }
 
@@ -58,6 +63,7 @@ impl Value {
             coeffs,
             ty: alg.resolve(BladeSet::single(b)),
             versor: false,
+            multiple: None,
         }
     }
 
@@ -80,6 +86,7 @@ impl Value {
             coeffs,
             ty: self.ty,
             versor: self.versor,
+            multiple: None,
         }
     }
 
@@ -87,6 +94,15 @@ impl Value {
         let mut v = product_with(prog, &Value::scalar(c.clone()), self, &|_, b| vec![(1, b)]);
         v.ty = self.ty;
         v.versor = self.versor;
+        v.multiple = self.multiple.as_ref().map(|(id, f)| {
+            let f = product_with(
+                prog,
+                &Value::scalar(f.clone()),
+                &Value::scalar(c.clone()),
+                &|_, _| vec![(1, 0)],
+            );
+            (*id, f.coeffs.get(&0).cloned().unwrap_or_default())
+        });
         v
     }
 
@@ -101,6 +117,7 @@ impl Value {
                 .collect(),
             ty,
             versor: false,
+            multiple: None,
         }
     }
 
@@ -160,6 +177,7 @@ fn product_with(
         coeffs: out,
         ty: Output::Scalar,
         versor: false,
+        multiple: None,
     }
 }
 
@@ -185,6 +203,7 @@ pub fn sum(alg: &Algebra, a: &Value, b: &Value, c: i64) -> Value {
         coeffs,
         ty: alg.resolve(set),
         versor: false,
+        multiple: None,
     }
 }
 
@@ -205,6 +224,7 @@ pub fn linear(alg: &Algebra, a: &Value, f: &dyn Fn(Blade) -> Vec<(i32, Blade)>) 
         coeffs,
         ty,
         versor: false,
+        multiple: None,
     }
 }
 
