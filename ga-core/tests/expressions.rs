@@ -35,6 +35,12 @@ ga_core::cga_null_expressions! {
         let r = expp(l * (angle / 2));
         (r * m, (r * m).sandwich_unit(&next))
     }
+    /// The example of docs/generator.md.
+    fn doc_step(#[versor] m: Motor, angle: T) -> (Motor, Line) {
+        let r = expp_blade(!(eo() ^ e3() ^ ei()) * (angle / 2));
+        let axis: Line = e12() + 114.2 * e1() * ei(); // checked: fits `Line`
+        (r * m, (r * m).sandwich_unit(&axis))
+    }
     /// Folded constants: the dual line through two constant points.
     fn z_axis() -> Line { !(up(0, 0, 0) ^ up(0, 0, 1) ^ ei()) }
     fn translate_x(t: T) -> Motor { 1 - t / 2 * e1() * ei() }
@@ -127,6 +133,8 @@ fn constants_fold() {
         Line::from_multivector(&(!t).into())
     };
     assert_eq!(z, direct);
+    let (moved, line) = doc_step(&Motor::translator([1.0, 0.0, 0.0]), 0.5);
+    assert!(moved.s.is_finite() && line.e12.is_finite());
     let m = translate_x(2.0);
     assert_eq!(m, Motor::translator([2.0, 0.0, 0.0]));
 }
