@@ -27,7 +27,7 @@
 use crate::cga;
 use crate::scalar::{Field, Real, Ring};
 
-/// The declaration of [`cga_null`](self), shared by the algebra (generated below) and by
+/// The declaration of [`cga_null`](crate::cga_null), shared by the algebra (generated below) and by
 /// [`cga_null_expressions!`](crate::cga_null_expressions), which generates fused functions over
 /// its types.
 #[doc(hidden)]
@@ -79,7 +79,7 @@ macro_rules! __ga_core_cga_null_declaration {
     };
 }
 
-/// Generates functions whose bodies are whole expressions over [`cga_null`](self)'s types, each
+/// Generates functions whose bodies are whole expressions over [`cga_null`](crate::cga_null)'s types, each
 /// expanded symbolically into one straight-line function generic over the scalar (see
 /// `docs/generator.md`, "Expressions"). The types are named without generics and `T` is the
 /// scalar; multivector arguments are taken by reference, scalars by value.
