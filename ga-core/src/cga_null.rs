@@ -27,47 +27,87 @@
 use crate::cga;
 use crate::scalar::{Field, Real, Ring};
 
-ga_macros::algebra! {
-    name: cga_null,
-    metric: [
-        [1, 0, 0, 0, 0],
-        [0, 1, 0, 0, 0],
-        [0, 0, 1, 0, 0],
-        [0, 0, 0, 0, -1],
-        [0, 0, 0, -1, 0],
-    ],
-    basis: [e1, e2, e3, eo, ei],
-    types: {
-        /// A grade-1 element: conformal points and spheres (`x + ½|x|² ei + eo`), planes.
-        Vector: grade 1,
-        /// A plane `n + d ei` (inner form): no `eo` part.
-        Plane: [e1, e2, e3, ei],
-        /// A grade-2 element: point pairs (outer form), lines and circles (inner form).
-        Bivector: grade 2,
-        /// A dual line (a rotation or screw axis): `e12, e13, e23` and `e1i, e2i, e3i`.
-        Line: [e12, e13, e23, e1i, e2i, e3i],
-        /// A flat point `x ∧ ei`-type bivector: `e1i, e2i, e3i, eoi`.
-        FlatPoint: [e1i, e2i, e3i, eoi],
-        /// A grade-3 element: lines and circles (outer form).
-        Trivector: grade 3,
-        /// A grade-4 element: spheres and planes (outer form).
-        Quadvector: grade 4,
-        /// A multiple of the pseudoscalar `I = e1 ∧ e2 ∧ e3 ∧ eo ∧ ei`.
-        Pseudoscalar: grade 5,
-        /// A rotation about an axis through the origin: scalar and `e12, e13, e23`.
-        Rotor: [1, e12, e13, e23],
-        /// A translation: scalar and `e1i, e2i, e3i`.
-        Translator: [1, e1i, e2i, e3i],
-        /// A rigid motion: rotor, translator and `e123i` blades; motor × motor is a motor.
-        Motor: [1, e12, e13, e23, e1i, e2i, e3i, e123i],
-        /// The even subalgebra (dilations, transversions and every other even versor).
-        Even: grades 0 2 4,
-        /// The odd elements: reflections and other odd versors.
-        Odd: grades 1 3 5,
-    },
-    dense: Multivector,
-    attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]],
+/// The declaration of [`cga_null`](crate::cga_null), shared by the algebra (generated below) and by
+/// [`cga_null_expressions!`](crate::cga_null_expressions), which generates fused functions over
+/// its types.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __ga_core_cga_null_declaration {
+    ($generator:ident { $($extra:tt)* }) => {
+        $crate::__ga_macros::$generator! {
+            name: cga_null,
+            metric: [
+                [1, 0, 0, 0, 0],
+                [0, 1, 0, 0, 0],
+                [0, 0, 1, 0, 0],
+                [0, 0, 0, 0, -1],
+                [0, 0, 0, -1, 0],
+            ],
+            basis: [e1, e2, e3, eo, ei],
+            types: {
+                /// A grade-1 element: conformal points and spheres (`x + ½|x|² ei + eo`), planes.
+                Vector: grade 1,
+                /// A plane `n + d ei` (inner form): no `eo` part.
+                Plane: [e1, e2, e3, ei],
+                /// A grade-2 element: point pairs (outer form), lines and circles (inner form).
+                Bivector: grade 2,
+                /// A dual line (a rotation or screw axis): `e12, e13, e23` and `e1i, e2i, e3i`.
+                Line: [e12, e13, e23, e1i, e2i, e3i],
+                /// A flat point `x ∧ ei`-type bivector: `e1i, e2i, e3i, eoi`.
+                FlatPoint: [e1i, e2i, e3i, eoi],
+                /// A grade-3 element: lines and circles (outer form).
+                Trivector: grade 3,
+                /// A grade-4 element: spheres and planes (outer form).
+                Quadvector: grade 4,
+                /// A multiple of the pseudoscalar `I = e1 ∧ e2 ∧ e3 ∧ eo ∧ ei`.
+                Pseudoscalar: grade 5,
+                /// A rotation about an axis through the origin: scalar and `e12, e13, e23`.
+                Rotor: [1, e12, e13, e23],
+                /// A translation: scalar and `e1i, e2i, e3i`.
+                Translator: [1, e1i, e2i, e3i],
+                /// A rigid motion: rotor, translator and `e123i` blades; motor × motor is a motor.
+                Motor: [1, e12, e13, e23, e1i, e2i, e3i, e123i],
+                /// The even subalgebra (dilations, transversions and every other even versor).
+                Even: grades 0 2 4,
+                /// The odd elements: reflections and other odd versors.
+                Odd: grades 1 3 5,
+            },
+            dense: Multivector,
+            attributes: [#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]],
+            $($extra)*
+        }
+    };
 }
+
+/// Generates functions whose bodies are whole expressions over [`cga_null`](crate::cga_null)'s types, each
+/// expanded symbolically into one straight-line function generic over the scalar (see
+/// `docs/generator.md`, "Expressions"). The types are named without generics and `T` is the
+/// scalar; multivector arguments are taken by reference, scalars by value.
+///
+/// ```
+/// use ga_core::cga_null::{self, Motor, Vector};
+///
+/// ga_core::cga_null_expressions! {
+///     /// A motor applied to a point: one kernel, the motor's zeros folded, the grade-3 part of
+///     /// `M X M̃` (zero for a versor) not computed.
+///     pub fn apply(#[versor] m: Motor, x: Vector) -> Vector { m * x * m.reverse() }
+/// }
+///
+/// let m = Motor::translator([1.0, 2.0, 3.0]);
+/// let x = cga_null::up_generic(1.0, 0.0, 0.0);
+/// assert_eq!(apply(&m, &x), ga_core::ops::SandwichUnit::sandwich_unit(&m, &x));
+/// ```
+#[macro_export]
+macro_rules! cga_null_expressions {
+    ($($functions:tt)*) => {
+        $crate::__ga_core_cga_null_declaration!(expressions {
+            path: $crate::cga_null,
+            functions: { $($functions)* },
+        });
+    };
+}
+
+crate::__ga_core_cga_null_declaration!(algebra {});
 
 // `eo()`, `ei()` and every other blade constructor are generated (`ei()` is a `Plane`).
 

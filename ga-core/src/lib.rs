@@ -90,6 +90,9 @@ pub mod symbolic;
 pub mod vga3;
 
 pub use approx;
+/// The generator, for the ready-made algebras' expression macros (`cga_null_expressions!`).
+#[doc(hidden)]
+pub use ga_macros as __ga_macros;
 pub use nalgebra;
 
 /// Everything needed to use generated algebras: the scalar and product traits.

@@ -76,6 +76,7 @@
 mod blade;
 mod emit;
 mod errors;
+mod expr;
 mod metric;
 mod model;
 mod parse;
@@ -88,14 +89,42 @@ use proc_macro::TokenStream;
 pub fn algebra(input: TokenStream) -> TokenStream {
     let mut declaration = syn::parse_macro_input!(input as parse::Declaration);
     let shaders = declaration.wgsl.take();
-    match model::Algebra::from_declaration(declaration)
-        .and_then(|a| Ok((wgsl::emit(&a, shaders.as_deref())?, a)))
-    {
-        Ok((shaders, algebra)) => {
+    let functions = core::mem::take(&mut declaration.functions);
+    let result = model::Algebra::from_declaration(declaration).and_then(|a| {
+        let shaders = wgsl::emit(&a, shaders.as_deref())?;
+        let fused = expr::emit(&a, &functions, None)?;
+        Ok((shaders, fused, a))
+    });
+    match result {
+        Ok((shaders, fused, algebra)) => {
             let mut tokens = emit::emit(&algebra);
             tokens.extend(shaders);
+            tokens.extend(fused);
             tokens.into()
         }
+        Err(e) => e.to_compile_error().into(),
+    }
+}
+
+/// Generates only the `functions` of an algebra declaration (the same keys as [`algebra!`],
+/// plus `path`: the module that holds the algebra's types), for expressions declared outside
+/// the algebra's own invocation. Ready-made algebras wrap it: `ga_core::cga_null_expressions!`.
+#[proc_macro]
+pub fn expressions(input: TokenStream) -> TokenStream {
+    let mut declaration = syn::parse_macro_input!(input as parse::Declaration);
+    let functions = core::mem::take(&mut declaration.functions);
+    let path = declaration.path.take();
+    let span = declaration.name.span();
+    let result = match path {
+        None => Err(syn::Error::new(
+            span,
+            "`expressions!` needs `path`: the module holding the algebra's types",
+        )),
+        Some(path) => model::Algebra::from_declaration(declaration)
+            .and_then(|a| expr::emit(&a, &functions, Some(&path))),
+    };
+    match result {
+        Ok(tokens) => tokens.into(),
         Err(e) => e.to_compile_error().into(),
     }
 }

@@ -44,6 +44,12 @@ pub struct Declaration {
     pub attributes: Vec<Attribute>,
     /// `wgsl: [Vector, ...]`: the types to emit WGSL shader source for (opt-in).
     pub wgsl: Option<Vec<Ident>>,
+    /// `functions: { fn f(m: Motor, x: Vector) -> Vector { ... } ... }`: whole expressions to
+    /// generate as single straight-line functions (see `expr`).
+    pub functions: Vec<syn::ItemFn>,
+    /// `path: ::ga_core::cga_null`: where the types live, for functions generated outside the
+    /// algebra's module (the `expressions!` macro).
+    pub path: Option<syn::Path>,
     /// Errors found while parsing that do not stop the model's checks (an unknown or repeated
     /// key): the model reports them together with its own.
     pub errors: Errors,
@@ -61,6 +67,8 @@ impl Parse for Declaration {
         let mut errors = Errors::default();
         let mut wgsl: Option<Vec<Ident>> = None;
         let mut metric: Option<(Vec<Vec<i32>>, Span)> = None;
+        let mut functions: Option<Vec<syn::ItemFn>> = None;
+        let mut path: Option<syn::Path> = None;
         let start = input.span();
         while !input.is_empty() {
             let key: Ident = input.parse()?;
@@ -85,7 +93,9 @@ impl Parse for Declaration {
             );
             let given = given
                 || (key_str == "wgsl" && wgsl.is_some())
-                || (key_str == "metric" && metric.is_some());
+                || (key_str == "metric" && metric.is_some())
+                || (key_str == "functions" && functions.is_some())
+                || (key_str == "path" && path.is_some());
             if (key_str == "metric" && signature.is_some())
                 || (key_str == "signature" && metric.is_some())
             {
@@ -161,12 +171,24 @@ impl Parse for Declaration {
                 "attributes" => {
                     attributes = Some(parse_attributes(input)?);
                 }
+                "functions" => {
+                    let content;
+                    braced!(content in input);
+                    let mut fns = Vec::new();
+                    while !content.is_empty() {
+                        fns.push(content.parse::<syn::ItemFn>()?);
+                    }
+                    functions = Some(fns);
+                }
+                "path" => {
+                    path = Some(input.parse::<syn::Path>()?);
+                }
                 other => {
                     errors.push(syn::Error::new(
                         key.span(),
                         format!(
                             "unknown key `{other}`: expected one of `name`, `signature`, `metric`, \
-                             `basis`, `types`, `dense`, `attributes`, `wgsl`"
+                             `basis`, `types`, `dense`, `attributes`, `wgsl`, `functions`, `path`"
                         ),
                     ));
                     // Skip its value and go on checking the rest.
@@ -228,6 +250,8 @@ impl Parse for Declaration {
             dense,
             attributes: attributes.unwrap_or_default(),
             wgsl,
+            functions: functions.unwrap_or_default(),
+            path,
             errors,
         })
     }
