@@ -224,8 +224,8 @@ impl Collider {
         }
         let scale = p.iter().fold(self.extent(), |m, x| m.max(x.abs()));
         // Every triangle not examined is proved farther than the best distance plus this
-        // margin, four times the first error bound `certify` tries (`32u` times the scale).
-        let margin = |d: f64| 128.0 * U * (scale + d);
+        // margin, four times the first error bound tried (see below).
+        let margin = |d: f64| 16384.0 * U * (scale + d);
         let limit_of = |d2: f64| {
             let r = d2.sqrt() + margin(d2.sqrt());
             r * r * (1.0 + 1e-9)
@@ -284,9 +284,12 @@ impl Collider {
             .collect();
         let t = self.corners(triangle);
         let within = |x: u32, c: f64| triangle_point(&self.corners(x), p, &[c, 0.0, 0.0]);
+        // The first bound tried is `4096u` times the scale (about `1e-12` relative), not the
+        // `32u` of mesh distances: the exact tests then decide in `f64` (their filters) instead
+        // of in exact arithmetic, which per point would cost far more than the search.
         let error_bound = certify(
             distance,
-            scale_of(&[p, &t[0], &t[1], &t[2]]),
+            128.0 * scale_of(&[p, &t[0], &t[1], &t[2]]),
             || triangle_point(&t, p, &[0.0; 3]),
             |c| triangle_point(&t, p, &[c, 0.0, 0.0]),
             |c| open.iter().any(|&(lb, x)| lb <= c && within(x, c)),
