@@ -20,6 +20,7 @@ mod scene;
 mod self_intersect;
 mod shape_json;
 mod shapes;
+mod signed_distance;
 mod spheretree;
 mod tree_file;
 
@@ -58,6 +59,9 @@ enum Command {
     /// Exact intersection tests of solid primitives (boxes, capsules, cylinders, cones,
     /// half-spaces, convex hulls, balls, triangles, segments), one pair a JSON line.
     Shapes(shapes::ShapesArgs),
+    /// Signed distance of points to a mesh (negative inside; on the surface is inside at 0),
+    /// with certified error bounds and the exact inside/outside.
+    SignedDistance(signed_distance::SignedDistanceArgs),
 }
 
 fn run(command: Command) -> Result<()> {
@@ -70,6 +74,7 @@ fn run(command: Command) -> Result<()> {
         Command::Distance(args) => distance::run(args),
         Command::SelfIntersect(args) => self_intersect::run(args),
         Command::Shapes(args) => shapes::run(args),
+        Command::SignedDistance(args) => signed_distance::run(args),
     }
 }
 

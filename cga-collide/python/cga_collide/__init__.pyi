@@ -56,6 +56,31 @@ class Distance:
     def __float__(self) -> float: ...
 
 @final
+class PointDistances:
+    """The signed distances of ``n`` points to a mesh, as arrays: ``signed_distance`` ``(n,)``
+    (negative inside, ``0`` on the surface, which is inside), ``error_bound`` ``(n,)`` (the true
+    distance is within it of ``|signed_distance|``, proved), ``inside`` ``(n,)`` bool (exact),
+    ``nearest`` ``(n, 3)`` (the nearest surface point) and ``triangle`` ``(n,)`` int64 (its
+    triangle).
+    """
+
+    @property
+    def signed_distance(self) -> _Float64Array:
+        """``(n,)`` float64: negative inside, ``0`` on the surface."""
+    @property
+    def error_bound(self) -> _Float64Array:
+        """``(n,)`` float64."""
+    @property
+    def inside(self) -> _BoolArray:
+        """``(n,)`` bool."""
+    @property
+    def nearest(self) -> _Float64Array:
+        """``(n, 3)`` float64."""
+    @property
+    def triangle(self) -> _Int64Array:
+        """``(n,)`` int64."""
+    def __len__(self) -> int: ...
+
 class DistanceBatch:
     """The certified distances of a batch, as arrays: ``distance`` and ``error_bound`` ``(k,)``,
     ``witness_a`` and ``witness_b`` ``(k, 3)``, ``triangles`` ``(k, 2)`` int64 (``-1`` where not
@@ -162,6 +187,14 @@ class Collider:
         """
     def contains_point_at(self, pose: ArrayLike, p: ArrayLike) -> bool:
         """``contains_point`` with the mesh at ``pose`` and ``p`` in world coordinates."""
+    def signed_distance(self, points: ArrayLike) -> PointDistances:
+        """The signed distance of every point of ``points`` (``(n, 3)``, finite) to the surface:
+        negative inside, ``0`` on the surface (which is inside), with a proved error bound, the
+        exact inside/outside (``contains_point``'s even–odd rule), the nearest point and its
+        triangle (a ``PointDistances`` of arrays). Spread over the cores.
+        """
+    def signed_distance_at(self, pose: ArrayLike, points: ArrayLike) -> PointDistances:
+        """``signed_distance`` with the mesh at ``pose`` and the points in world coordinates."""
     # distances
     def within_distance(self, other: Collider, c: float) -> bool:
         """Whether the surfaces come within distance ``c`` (closed: exactly ``c`` counts), exactly."""

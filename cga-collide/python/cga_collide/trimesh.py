@@ -553,3 +553,9 @@ def scene_to_collision(scene: Any) -> Tuple[CollisionManager, Dict[str, ObjectId
             name=node, mesh=scene.geometry[geometry], transform=transform
         )
     return manager, objects
+
+
+# ``trimesh.proximity``-style functions of points against meshes (exact signs).
+from .proximity import closest_point, contains, signed_distance  # noqa: E402
+
+__all__ += ["closest_point", "contains", "signed_distance"]

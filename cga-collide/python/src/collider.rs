@@ -14,6 +14,7 @@ use pyo3::types::{PyBytes, PyTuple};
 use crate::answers::{contact_tuples, exact_distance_tuple};
 use crate::convert::{self, bools, err, value_error, Arg, Bools, Indices, Pairs};
 use crate::distance::{distance_batch, Distance, DistanceBatch};
+use crate::points::{point_distances, PointDistances};
 use crate::shape_queries::shape as shape_arg;
 
 /// A triangle mesh built once (its box tree and the layout the pose queries read), and every
@@ -337,6 +338,25 @@ impl Collider {
     fn contains_point_at(&self, py: Python<'_>, pose: &Arg, p: &Arg) -> PyResult<bool> {
         let p = convert::point(p, "p")?;
         self.placed(py, pose, |a, pose| a.contains_point_at(pose, &p))
+    }
+
+    /// The signed distance of every point of ``points`` (``(n, 3)``, finite) to the surface:
+    /// negative inside, ``0`` on the surface (which is inside), with a proved error bound, the
+    /// exact inside/outside (``contains_point``'s even–odd rule), the nearest point and its
+    /// triangle (a ``PointDistances`` of arrays). Spread over the cores.
+    fn signed_distance(&self, py: Python<'_>, points: &Arg) -> PyResult<PointDistances> {
+        let points = convert::points(points, "points")?;
+        let d = self.alone(py, |a| a.signed_distances(&points)).map_err(err)?;
+        Ok(point_distances(py, &d))
+    }
+
+    /// ``signed_distance`` with the mesh at ``pose`` and the points in world coordinates.
+    fn signed_distance_at(
+        &self, py: Python<'_>, pose: &Arg, points: &Arg,
+    ) -> PyResult<PointDistances> {
+        let points = convert::points(points, "points")?;
+        let d = self.placed(py, pose, |a, pose| a.signed_distances_at(pose, &points))?;
+        Ok(point_distances(py, &d))
     }
 
     // ------------------------------------------------------------------ distances

@@ -11,6 +11,7 @@ mod collider;
 mod convert;
 mod distance;
 mod motion;
+mod points;
 mod scene;
 mod shape_queries;
 mod shapes;
@@ -38,6 +39,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<collider::Collider>()?;
     m.add_class::<distance::Distance>()?;
     m.add_class::<distance::DistanceBatch>()?;
+    m.add_class::<points::PointDistances>()?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
     motion::register(m)?;

@@ -67,9 +67,12 @@ pub(crate) mod poses;
 mod self_intersection;
 mod serial;
 mod shapes;
+mod signed_distance;
+mod solid_sides;
 
 pub use contacts::{ContactClass, Contacts};
 pub use pose::{pose_from_degrees, pose_from_matrix, PosePair, ROTATION_TOLERANCE};
+pub use signed_distance::PointDistance;
 
 use std::sync::OnceLock;
 
@@ -112,6 +115,9 @@ pub struct Collider {
     /// The hierarchy laid out for pose queries (centre/extent nodes, vertices in leaf order),
     /// built on first use: only the queries under poses read it.
     pose_tree: OnceLock<PoseTree>,
+    /// Which side of each triangle is outside, for the signed distance of points (found on
+    /// first use).
+    sides: OnceLock<solid_sides::SolidSides>,
     mode: Mode,
 }
 
@@ -247,6 +253,7 @@ impl Collider {
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
+            sides: OnceLock::new(),
             mode: Mode::default(),
         }
     }
@@ -266,6 +273,7 @@ impl Collider {
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
+            sides: OnceLock::new(),
             mode: self.mode,
         })
     }

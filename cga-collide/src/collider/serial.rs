@@ -131,6 +131,7 @@ impl Collider {
             boxes32: OnceLock::new(),
             extent,
             pose_tree: OnceLock::new(),
+            sides: OnceLock::new(),
             mode,
         })
     }

@@ -34,7 +34,7 @@ const NORMAL: f64 = 1.0e-290;
 /// `|n|²`. `None` when the projections overlap, or anything is out of range (non-finite, or `n`
 /// so short that `nn` could underflow).
 #[inline]
-fn separation(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Option<(f64, f64)> {
+pub(crate) fn separation(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Option<(f64, f64)> {
     let nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     if !(nn >= SMALL2 && nn.is_finite()) {
         return None;
@@ -69,7 +69,7 @@ fn separation(n: &V<f64>, p: &[V<f64>; 3], q: &[V<f64>; 3]) -> Option<(f64, f64)
 /// `g²` must be far from the subnormal range (where rounding is absolute, not relative); then
 /// a subnormal `best·nn` is below it anyway.
 #[inline]
-fn separated_beyond((g, nn): (f64, f64), best: f64) -> bool {
+pub(crate) fn separated_beyond((g, nn): (f64, f64), best: f64) -> bool {
     let g2 = g * g;
     g2 >= NORMAL && g2 * (1.0 - 16.0 * U) > best * nn
 }
@@ -77,7 +77,7 @@ fn separated_beyond((g, nn): (f64, f64), best: f64) -> bool {
 /// The proved lower bound `g / √nn` of a separation, rounded down (the square root, the
 /// division and `nn` cost under `4u` relative, paid by the factor `1 − 8u`).
 #[inline]
-fn separation_bound((g, nn): (f64, f64)) -> f64 {
+pub(crate) fn separation_bound((g, nn): (f64, f64)) -> f64 {
     let b = g / nn.sqrt() * (1.0 - 8.0 * U);
     // A quotient near the subnormal range could be rounded up by an absolute amount.
     if b >= NORMAL {

@@ -1,0 +1,336 @@
+//! Points against a mesh: the signed distance of many query points, with a certified error
+//! bound, the exact inside/outside, and the nearest point and triangle.
+//!
+//! # Definitions
+//! * **Inside** is [`Collider::contains_point`]'s answer, exact: a point on a triangle is
+//!   inside; otherwise the parity of the crossings of a ray (the even–odd rule). For a closed
+//!   mesh ([`TriMesh::is_closed`](crate::TriMesh::is_closed)) that is the solid the surface
+//!   bounds; for an open or self-intersecting mesh it is the even–odd rule of that one ray
+//!   (documented, deterministic, but not a winding number).
+//! * **Distance** is the distance from the point to the nearest point of the surface (the union
+//!   of the triangles), in `f64` with an `error_bound` proved with exact predicates: the true
+//!   distance (of the real numbers the `f64` inputs denote) lies in
+//!   `[distance − error_bound, distance + error_bound]`.
+//! * **Signed distance** is `−distance` inside and `+distance` outside; a point on the surface
+//!   is inside at distance exactly `0` (error bound `0`).
+//!
+//! # How
+//! Per point, a best-first search of the box tree for the nearest triangle (boxes ordered by
+//! their distance to the point, `f64` point–triangle distances, every triangle not examined
+//! proved farther, with a margin above the rounding); the distance is then certified as the
+//! mesh distance is (an exact clearance test of the winner for the upper end, exact tests of
+//! the few triangles not proved farther for the lower end).
+//!
+//! The sign comes from the nearest face when that is certain: the mesh is closed, consistently
+//! oriented and free of self-intersections (checked once, exactly, on the first query), the
+//! nearest triangle is proved unique (so the nearest point is inside that face and the segment
+//! to it crosses nothing), and the point's side of its plane is an exact `orient3d` sign. Every
+//! other point (near-ties between faces, points nearest to an edge or a vertex, meshes that fail
+//! the check) takes the exact ray test. Both routes give the same answer, exact either way; the
+//! first is only faster.
+
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+use nalgebra::{Isometry3, Point3};
+
+use crate::bounding::{box_distance2, Aabb};
+use crate::collider::distance::check_distance_range;
+use crate::collider::nearest::{enqueue, queued, unqueued};
+use crate::collider::solid_sides::SolidSides;
+use crate::collider::Collider;
+use crate::error::Error;
+use crate::exact::{ExactKernel, Kernel};
+use crate::parallel::*;
+use crate::query::closest_points::point_triangle;
+use crate::query::distance::{certify, scale_of};
+use crate::query::separation::{separated_beyond, separation, separation_bound};
+use crate::query::within_distance::triangle_point;
+use crate::shape::limits::check_point;
+
+/// `2⁻⁵³`, the unit roundoff.
+const U: f64 = f64::EPSILON / 2.0;
+
+/// Points per work item of the batches.
+const CHUNK: usize = 256;
+
+/// The signed distance of one point to a mesh (see the [module docs](self)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PointDistance {
+    /// `−distance` inside, `+distance` outside; `0` on the surface (which is inside).
+    pub signed_distance: f64,
+    /// The true distance lies within this of `|signed_distance|` (proved).
+    pub error_bound: f64,
+    /// Whether the point lies in the closed solid (exact; [`Collider::contains_point`]).
+    pub inside: bool,
+    /// The nearest point of the surface (computed in `f64`: on the triangle up to rounding; the
+    /// point itself when it lies on the surface).
+    pub nearest: Point3<f64>,
+    /// The triangle holding `nearest` (among equally near ones found in `f64`, the smallest
+    /// index).
+    pub triangle: u32,
+}
+
+/// The nearest triangle of a point, its certified distance and whether it is the only nearest
+/// one.
+pub(crate) struct Nearest {
+    pub(crate) triangle: u32,
+    /// `f64` distance to `triangle`.
+    pub(crate) distance: f64,
+    pub(crate) error_bound: f64,
+    /// The `f64` nearest point of `triangle`.
+    pub(crate) witness: [f64; 3],
+    /// A triangle the point lies on (exact), if any.
+    pub(crate) on_surface: Option<u32>,
+    /// Every other triangle is proved farther than `triangle`.
+    pub(crate) unique: bool,
+}
+
+/// An examined triangle: `(proved lower bound on its distance, triangle, separation)`.
+type Examined = (f64, u32, Option<(f64, f64)>);
+
+impl Collider {
+    /// The signed distance of `p` to this mesh (see the [module docs](self)): negative inside,
+    /// `0` on the surface, with its certified error bound, the exact inside/outside, and the
+    /// nearest point and triangle.
+    ///
+    /// Errors: [`Error::NonFiniteCoordinate`] or [`Error::CoordinateOutOfRange`] for a point
+    /// that is not finite or beyond `2^500`, [`Error::Empty`] for a mesh without triangles,
+    /// [`Error::OutOfRange`] for a mesh too large to certify.
+    ///
+    /// ```
+    /// use cga_collide::{nalgebra::Point3, Collider, TriMesh};
+    /// let cube = Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1., 1., 1.))?);
+    /// let d = cube.signed_distance(&Point3::new(0.5, 0.5, 0.25))?;
+    /// assert!(d.inside && (d.signed_distance + 0.25).abs() <= d.error_bound);
+    /// let on = cube.signed_distance(&Point3::new(1.0, 0.5, 0.5))?;
+    /// assert!(on.inside && on.signed_distance == 0.0 && on.error_bound == 0.0);
+    /// # Ok::<(), cga_collide::Error>(())
+    /// ```
+    pub fn signed_distance(&self, p: &Point3<f64>) -> Result<PointDistance, Error> {
+        self.check_points(std::slice::from_ref(p))?;
+        Ok(self.point_distance(p))
+    }
+
+    /// [`signed_distance`](Self::signed_distance) of every point, spread over the cores (in the
+    /// order of `points`). A bad point fails the whole batch with
+    /// [`Error::InShapePoint`] naming its index.
+    pub fn signed_distances(&self, points: &[Point3<f64>]) -> Result<Vec<PointDistance>, Error> {
+        self.check_points(points)?;
+        let _ = self.sides();
+        let _ = self.pose_tree();
+        Ok(points
+            .par_chunks(CHUNK)
+            .flat_map_iter(|chunk| chunk.iter().map(|p| self.point_distance(p)))
+            .collect())
+    }
+
+    /// [`signed_distances`](Self::signed_distances) of world points against this mesh placed at
+    /// `pose`: the mesh is placed first ([`placed`](Self::placed), work proportional to its
+    /// size once per call, not per point), so the answers are exactly those of the placed mesh;
+    /// nearest points are in world coordinates.
+    pub fn signed_distances_at(
+        &self,
+        pose: &Isometry3<f64>,
+        points: &[Point3<f64>],
+    ) -> Result<Vec<PointDistance>, Error> {
+        self.world_boxes(pose)?; // checks the pose: finite, a rotation, within range
+        self.placed(pose)?.signed_distances(points)
+    }
+
+    /// Rejects non-finite or too large points (naming the first bad one) and meshes that
+    /// cannot be certified.
+    fn check_points(&self, points: &[Point3<f64>]) -> Result<(), Error> {
+        if self.mesh().num_triangles() == 0 {
+            return Err(Error::Empty {
+                file: "Collider".to_owned(),
+            });
+        }
+        check_distance_range(self.extent())?;
+        for (index, p) in points.iter().enumerate() {
+            check_point("point", "points", p).map_err(|source| Error::InShapePoint {
+                index,
+                source: Box::new(source),
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Which side of each triangle is outside (found on the first call).
+    pub(crate) fn sides(&self) -> &SolidSides {
+        self.sides.get_or_init(|| SolidSides::find(self))
+    }
+
+    /// The answer for one checked point.
+    fn point_distance(&self, point: &Point3<f64>) -> PointDistance {
+        let p = [point.x, point.y, point.z];
+        // A checked point and a non-empty mesh always give an answer; the fallback is for
+        // completeness only (the exact ray test and no distance).
+        let Some(near) = self.nearest_certified(&p) else {
+            return PointDistance {
+                signed_distance: f64::NAN,
+                error_bound: f64::INFINITY,
+                inside: self.contains_point(point),
+                nearest: *point,
+                triangle: 0,
+            };
+        };
+        if let Some(triangle) = near.on_surface {
+            return PointDistance {
+                signed_distance: 0.0,
+                error_bound: 0.0,
+                inside: true,
+                nearest: *point,
+                triangle,
+            };
+        }
+        let inside = self
+            .side_from_nearest_face(&near, &p)
+            .unwrap_or_else(|| self.contains_point(point));
+        PointDistance {
+            signed_distance: if inside {
+                -near.distance
+            } else {
+                near.distance
+            },
+            error_bound: near.error_bound,
+            inside,
+            nearest: Point3::from(near.witness),
+            triangle: near.triangle,
+        }
+    }
+
+    /// Inside or outside from the nearest face, when that is certain (see the module docs).
+    fn side_from_nearest_face(&self, near: &Nearest, p: &[f64; 3]) -> Option<bool> {
+        if !near.unique {
+            return None;
+        }
+        let outward = self.sides().of(near.triangle);
+        if outward == 0 {
+            return None;
+        }
+        let [a, b, c] = self.corners(near.triangle);
+        match ExactKernel::orient3d(&a, &b, &c, p) {
+            Ordering::Greater => Some(outward < 0),
+            Ordering::Less => Some(outward > 0),
+            Ordering::Equal => None,
+        }
+    }
+
+    /// The nearest triangle of `p` (finite, within range), certified; `None` for an empty mesh.
+    pub(crate) fn nearest_certified(&self, p: &[f64; 3]) -> Option<Nearest> {
+        if self.mesh().num_triangles() == 0 {
+            return None;
+        }
+        let scale = p.iter().fold(self.extent(), |m, x| m.max(x.abs()));
+        // Every triangle not examined is proved farther than the best distance plus this
+        // margin, four times the first error bound tried (see below).
+        let margin = |d: f64| 16384.0 * U * (scale + d);
+        let limit_of = |d2: f64| {
+            let r = d2.sqrt() + margin(d2.sqrt());
+            r * r * (1.0 + 1e-9)
+        };
+        let nodes = self.bvh().nodes();
+        let tree = self.pose_tree();
+        let at = Aabb { min: *p, max: *p };
+        let mut examined: Vec<Examined> = Vec::new();
+        let mut best = (f64::INFINITY, u32::MAX, [0.0; 3]);
+        let mut limit = f64::INFINITY;
+        let mut heap = BinaryHeap::new();
+        let mut next = Some(queued(box_distance2(&at, &nodes[0].bounds), 0, 0));
+        while let Some((lower, i, _)) = next.take().map(unqueued) {
+            if lower > limit {
+                break; // best first: everything left is farther
+            }
+            let node = &nodes[i as usize];
+            let s = node.start as usize;
+            if node.is_leaf() {
+                for k in s..s + node.count as usize {
+                    let q = tree.vertices(k).map(|v| [v.x, v.y, v.z]);
+                    if box_distance2(&at, &corners_box(&q)) > limit {
+                        continue;
+                    }
+                    let t = tree.index(k);
+                    let w = point_triangle(&q, p);
+                    let d2 = dist2(&w, p);
+                    let sep = separation(&[w[0] - p[0], w[1] - p[1], w[2] - p[2]], &[*p; 3], &q);
+                    examined.push((sep.map_or(0.0, separation_bound), t, sep));
+                    if d2 < best.0 || (d2 == best.0 && t < best.1) {
+                        best = (d2, t, w);
+                        limit = limit_of(d2);
+                    }
+                }
+                next = heap.pop();
+                continue;
+            }
+            for child in [node.start, node.start + 1] {
+                let d = box_distance2(&at, &nodes[child as usize].bounds);
+                if d <= limit {
+                    enqueue(&mut next, &mut heap, queued(d, child, 0));
+                }
+            }
+            if next.is_none() {
+                next = heap.pop();
+            }
+        }
+        let (best2, triangle, witness) = best;
+        let distance = best2.sqrt();
+        // Certification first with every examined triangle not proved farther than the best
+        // `f64` distance (every other triangle is).
+        let open: Vec<(f64, u32)> = examined
+            .iter()
+            .filter(|&&(_, _, sep)| !sep.is_some_and(|s| separated_beyond(s, best2)))
+            .map(|&(lb, x, _)| (lb, x))
+            .collect();
+        let t = self.corners(triangle);
+        let within = |x: u32, c: f64| triangle_point(&self.corners(x), p, &[c, 0.0, 0.0]);
+        // The first bound tried is `4096u` times the scale (about `1e-12` relative), not the
+        // `32u` of mesh distances: the exact tests then decide in `f64` (their filters) instead
+        // of in exact arithmetic, which per point would cost far more than the search.
+        let error_bound = certify(
+            distance,
+            128.0 * scale_of(&[p, &t[0], &t[1], &t[2]]),
+            || triangle_point(&t, p, &[0.0; 3]),
+            |c| triangle_point(&t, p, &[c, 0.0, 0.0]),
+            |c| open.iter().any(|&(lb, x)| lb <= c && within(x, c)),
+        );
+        let on_surface = if error_bound >= distance {
+            open.iter()
+                .find(|&&(lb, x)| lb <= 0.0 && within(x, 0.0))
+                .map(|&(_, x)| x)
+        } else {
+            None
+        };
+        // Unique: the triangles not examined are farther than `distance + margin`, above the
+        // certified upper end; every examined one but the winner is proved beyond that end.
+        let upper = (distance + error_bound) * (1.0 + 4.0 * U);
+        let unique = on_surface.is_none()
+            && error_bound <= 0.5 * margin(distance)
+            && examined
+                .iter()
+                .all(|&(lb, x, _)| x == triangle || lb > upper);
+        Some(Nearest {
+            triangle,
+            distance,
+            error_bound,
+            witness,
+            on_surface,
+            unique,
+        })
+    }
+}
+
+/// The box of a triangle's corners (exact `min`/`max`).
+#[inline]
+fn corners_box(t: &[[f64; 3]; 3]) -> Aabb {
+    Aabb {
+        min: std::array::from_fn(|k| t[0][k].min(t[1][k]).min(t[2][k])),
+        max: std::array::from_fn(|k| t[0][k].max(t[1][k]).max(t[2][k])),
+    }
+}
+
+#[inline]
+fn dist2(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+}
