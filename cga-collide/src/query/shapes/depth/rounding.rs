@@ -43,17 +43,16 @@ pub(super) fn signed_root_minus(
     let (t, et) = root(q);
     let [ra, rb] = radii;
     if !outward || q.is_zero() {
+        if q.is_zero() && ra == 0.0 && rb == 0.0 {
+            return (0.0, 0.0, SignedDistanceKind::Touching);
+        }
         let v = ErrF64 {
             value: -t,
             error: et,
         } - ErrF64::exact(ra)
             - ErrF64::exact(rb);
-        let kind = if q.is_zero() && ra == 0.0 && rb == 0.0 {
-            return (0.0, 0.0, SignedDistanceKind::Touching);
-        } else {
-            SignedDistanceKind::Penetrating
-        };
-        return (v.value, (v.error * (1.0 + 1e-9)).next_up(), kind);
+        let bound = (v.error * (1.0 + 1e-9)).next_up();
+        return (v.value, bound, SignedDistanceKind::Penetrating);
     }
     // Outward: the exact difference q − R² decides the kind and carries the small value.
     let r = rational_from_f64(ra).unwrap_or_else(|| zero.clone())
