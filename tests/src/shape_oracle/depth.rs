@@ -148,7 +148,7 @@ fn differences(p: &[P3]) -> Vec<P3> {
 /// The squared depth of the origin in `M = hull(P) − hull(Q)` (which holds it): 0 when `M`
 /// is flat, else the least `h_M(n)² / n·n` over every candidate facet normal of `M` (the
 /// facet normals of `P` and of `Q`, and the cross products of a difference of two points of
-/// `P` with one of `Q`).
+/// `P` with one of `Q`, each taken both ways).
 fn depth2(p: &[P3], q: &[P3]) -> Q {
     let (dp, dq) = (differences(p), differences(q));
     let all: Vec<P3> = dp.iter().chain(&dq).cloned().collect();
@@ -162,6 +162,13 @@ fn depth2(p: &[P3], q: &[P3]) -> Q {
             candidates.push(cross(u, v));
         }
     }
+    // Each candidate either way: the facet of `M` on that line may face either way, and
+    // `h_M(n)` differs from `h_M(−n)` unless the origin is the centre of `M`.
+    let opposite: Vec<P3> = candidates
+        .iter()
+        .map(|n| core::array::from_fn(|k| -n[k].clone()))
+        .collect();
+    candidates.extend(opposite);
     let mut best: Option<Q> = None;
     for n in candidates {
         let nn = dot(&n, &n);

@@ -142,13 +142,22 @@ impl Core {
     }
 }
 
-/// One candidate normal: a coordinate axis, a direction crossed with an axis, or the cross
+/// One candidate line: a coordinate axis, a direction crossed with an axis, or the cross
 /// product of two directions (indices into the directions of `P` followed by those of `Q`).
 #[derive(Debug, Clone, Copy)]
-enum Candidate {
+enum Line {
     Axis(usize),
     WithAxis(usize, usize),
     Pair(usize, usize),
+}
+
+/// One candidate normal: a [`Line`] taken either way. Both ways are needed: `h_M(n)` and
+/// `h_M(−n)` differ whenever the origin is not the centre of `M`, and the facet normal that
+/// attains the depth may point either way along the cross product that spans it.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    line: Line,
+    negated: bool,
 }
 
 fn axis<R: Ring>(k: usize) -> [R; 3] {
@@ -157,21 +166,29 @@ fn axis<R: Ring>(k: usize) -> [R; 3] {
 
 impl Candidate {
     fn vector<R: Ring>(&self, directions: &[[R; 3]]) -> [R; 3] {
-        match *self {
-            Candidate::Axis(k) => axis(k),
-            Candidate::WithAxis(i, k) => cross(&directions[i], &axis(k)),
-            Candidate::Pair(i, j) => cross(&directions[i], &directions[j]),
+        let v: [R; 3] = match self.line {
+            Line::Axis(k) => axis(k),
+            Line::WithAxis(i, k) => cross(&directions[i], &axis(k)),
+            Line::Pair(i, j) => cross(&directions[i], &directions[j]),
+        };
+        if self.negated {
+            v.map(|x| -x)
+        } else {
+            v
         }
     }
 }
 
 fn candidates(directions: usize) -> Vec<Candidate> {
-    let mut out: Vec<Candidate> = (0..3).map(Candidate::Axis).collect();
+    let mut lines: Vec<Line> = (0..3).map(Line::Axis).collect();
     for i in 0..directions {
-        out.extend((0..3).map(|k| Candidate::WithAxis(i, k)));
-        out.extend((i + 1..directions).map(|j| Candidate::Pair(i, j)));
+        lines.extend((0..3).map(|k| Line::WithAxis(i, k)));
+        lines.extend((i + 1..directions).map(|j| Line::Pair(i, j)));
     }
-    out
+    lines
+        .into_iter()
+        .flat_map(|line| [false, true].map(|negated| Candidate { line, negated }))
+        .collect()
 }
 
 /// The exact penetration depth of two meeting cores, squared, with its normal.
@@ -308,10 +325,15 @@ pub(super) fn depth(a: &Core, b: &Core) -> Depth {
         Real::to_f64(&n[1]),
         Real::to_f64(&n[2]),
     );
-    let normal = nf
-        .try_normalize(0.0)
-        .or_else(|| (nf * 2f64.powi(600)).try_normalize(0.0))
-        .unwrap_or_else(Vector3::x);
+    // Scaled by its largest component first, so that neither squares of 1e200 overflow nor
+    // squares of 1e-200 underflow in the norm.
+    let largest = nf.amax();
+    let normal = if largest > 0.0 && largest.is_finite() {
+        (nf / largest).try_normalize(0.0)
+    } else {
+        None
+    }
+    .unwrap_or_else(Vector3::x);
     Depth {
         depth2,
         normal,
