@@ -5,6 +5,13 @@
 //! object a line: `{"file", "pairs", "answers", "micros_mean", "micros_max"}`, the answers of
 //! `query::intersects` in file order and its time per pair (parsing excluded). A malformed
 //! line, or a pair the library refuses, is an error naming the file and the line.
+//!
+//! With `--depth`, each object also has `"signed_distance"` and `"error_bound"`: one value a
+//! pair, from `query::signed_distance` (the distance when apart, minus the penetration depth
+//! when overlapping, the true value within the bound), and `"depth_micros_mean"`, their mean
+//! time per pair. A pair whose signed distance the
+//! library does not compute (`UnsupportedPair`: a cylinder or a cone meeting another shape,
+//! two half-spaces that are not opposite) gets `null` in both arrays.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -33,6 +40,12 @@ pub struct ShapesArgs {
     /// the way the peers' benchmark drivers time them. 1 (the default) times one call.
     #[arg(long, default_value_t = 1, value_name = "N")]
     repeat: usize,
+    /// Also give each pair's signed distance (minus the penetration depth when they overlap)
+    /// and its proved error bound: "signed_distance" and "error_bound" arrays with --json,
+    /// null for a pair whose depth is not computed (a cylinder or cone that meets the other
+    /// shape, two half-spaces that are not opposite).
+    #[arg(long)]
+    depth: bool,
 }
 
 /// The time per call of `intersects(a, b)` in microseconds, and its answer (see `--repeat`).
@@ -110,6 +123,23 @@ fn read(path: &Path) -> Result<Vec<(usize, Shape, Shape)>> {
     Ok(out)
 }
 
+/// The signed distance and its bound of each pair (`None` where the library does not compute
+/// it) and the mean time per pair in microseconds, or the first other error with its file
+/// and line.
+fn depths(path: &Path, pairs: &[(usize, Shape, Shape)]) -> Result<(Vec<Option<(f64, f64)>>, f64)> {
+    let t = Instant::now();
+    let out = pairs
+        .iter()
+        .map(|(line, a, b)| match query::signed_distance(a, b) {
+            Ok(sd) => Ok(Some((sd.value, sd.error_bound))),
+            Err(cga_collide::Error::UnsupportedPair { .. }) => Ok(None),
+            Err(e) => Err(e).with_context(|| format!("{}:{line}", path.display())),
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let micros = t.elapsed().as_secs_f64() * 1e6 / pairs.len().max(1) as f64;
+    Ok((out, micros))
+}
+
 /// Runs `cga shapes`.
 pub fn run(args: ShapesArgs) -> Result<()> {
     for path in &args.files {
@@ -129,8 +159,13 @@ pub fn run(args: ShapesArgs) -> Result<()> {
         } else {
             total / pairs.len() as f64
         };
+        let depths = if args.depth {
+            Some(depths(path, &pairs)?)
+        } else {
+            None
+        };
         if args.json {
-            let value = json!({
+            let mut value = json!({
                 "file": path.display().to_string(),
                 "pairs": pairs.len(),
                 "answers": answers,
@@ -138,6 +173,11 @@ pub fn run(args: ShapesArgs) -> Result<()> {
                 "micros_max": max,
                 "micros_median": median(times),
             });
+            if let Some((d, micros)) = &depths {
+                value["signed_distance"] = d.iter().map(|x| x.map(|x| x.0)).collect();
+                value["error_bound"] = d.iter().map(|x| x.map(|x| x.1)).collect();
+                value["depth_micros_mean"] = json!(micros);
+            }
             println!("{value}");
         } else {
             let hits = answers.iter().filter(|&&a| a).count();
@@ -149,6 +189,12 @@ pub fn run(args: ShapesArgs) -> Result<()> {
             let bits: String = answers.iter().map(|&a| if a { '1' } else { '0' }).collect();
             if !bits.is_empty() {
                 println!("{bits}");
+            }
+            for (k, d) in depths.iter().flat_map(|d| &d.0).enumerate() {
+                match d {
+                    Some((v, e)) => println!("pair {}: signed distance {v:e} ± {e:.1e}", k + 1),
+                    None => println!("pair {}: signed distance not computed", k + 1),
+                }
             }
         }
     }

@@ -620,6 +620,41 @@ def distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) ->
 def distance_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
     """``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays."""
 
+class SignedDistance:
+    """A certified signed distance between two shapes: ``value`` is the distance when they are
+    apart and minus the penetration depth (the shortest translation of ``b`` that separates
+    them) when they overlap; the true value is within ``error_bound`` of it. ``normal`` is the
+    unit direction from ``a`` to ``b``: translating ``b`` by ``-value * normal`` makes them
+    touch. ``witness_a`` and ``witness_b`` are points of each with
+    ``(witness_b - witness_a) @ normal == value`` up to rounding. ``kind`` is ``"separated"``,
+    ``"touching"`` or ``"penetrating"``, decided exactly.
+    """
+
+    @property
+    def value(self) -> float:
+        """The signed distance (negative when the shapes overlap)."""
+    @property
+    def error_bound(self) -> float:
+        """The proved bound on ``|value − true signed distance|``."""
+    @property
+    def normal(self) -> _Float64Array:
+        """The unit normal from ``a`` to ``b``, a ``(3,)`` float64 array."""
+    @property
+    def witness_a(self) -> _Float64Array:
+        """The witness point of ``a``, a ``(3,)`` float64 array."""
+    @property
+    def witness_b(self) -> _Float64Array:
+        """The witness point of ``b``, a ``(3,)`` float64 array."""
+    @property
+    def kind(self) -> str:
+        """``"separated"``, ``"touching"`` or ``"penetrating"``."""
+    def __float__(self) -> float: ...
+
+def signed_distance(a: Shape, b: Shape) -> SignedDistance:
+    """The certified signed distance of two shapes (``value < 0``: minus the penetration depth)."""
+def signed_distance_at(a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike) -> SignedDistance:
+    """``signed_distance`` of the shapes placed by their ``(4, 4)`` poses."""
+
 def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = None) -> _Float64Array:
     """The ``(4, 4)`` float64 pose that rotates by ``degrees[0]`` about the x axis, then by
     ``degrees[1]`` about the y axis, then by ``degrees[2]`` about the z axis (fixed axes,

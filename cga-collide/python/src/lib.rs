@@ -15,6 +15,7 @@ mod points;
 mod scene;
 mod shape_queries;
 mod shapes;
+mod signed_distance;
 
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -45,6 +46,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     motion::register(m)?;
     shapes::register(m)?;
     shape_queries::register(m)?;
+    signed_distance::register(m)?;
     m.add_function(wrap_pyfunction!(pose_from_degrees, m)?)?;
     m.add("CgaError", m.py().get_type::<convert::CgaError>())?;
     m.add("ROTATION_TOLERANCE", convert::ROTATION_TOLERANCE)?;

@@ -55,6 +55,10 @@ pub use intersects::{
     intersects_triangle_triangle, Intersects,
 };
 pub use segment_entry::segment_triangle_entry;
+pub use shapes::depth::{
+    signed_distance, signed_distance_at, signed_distance_batch, SignedDistance, SignedDistanceKind,
+    MAX_HULL_POINTS,
+};
 pub use shapes::named::*;
 pub use shapes::{
     distance, distance_at, distance_batch, intersects, intersects_at, intersects_batch,

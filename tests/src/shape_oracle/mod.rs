@@ -13,6 +13,7 @@
 //!   ([`construct`]) give them truth by construction.
 
 pub mod construct;
+pub mod depth;
 pub mod exact;
 pub mod generate;
 pub mod hull;

@@ -21,6 +21,7 @@ use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
 use crate::shape::{PosePair, Shape};
 
+pub(crate) mod depth;
 pub(crate) mod named;
 pub(crate) mod polytopal;
 pub(crate) mod round;

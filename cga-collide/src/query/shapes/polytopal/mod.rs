@@ -189,3 +189,13 @@ fn distance_cores(a: &Core, b: &Core) -> CertifiedDistance {
         triangles: None,
     }
 }
+
+/// For the signed distance ([`super::depth`]): the exact squared distance between the cores
+/// of two polytopal shapes (radii left out) and the `f64` nearest points of the cores; `None`
+/// for half-spaces, cylinders and cones.
+pub(crate) fn exact_core_distance2(a: &Shape, b: &Shape) -> Option<(Rational, [f64; 3], [f64; 3])> {
+    let (a, b) = (Core::of(a)?, Core::of(b)?);
+    let found = gjk::search(&a, &b);
+    let (x, y) = found.witnesses(&a, &b);
+    Some((gjk::exact_distance2(&a, &b, &found.pairs), x, y))
+}
