@@ -11,6 +11,7 @@ mod collider;
 mod convert;
 mod distance;
 mod motion;
+mod robot;
 mod scene;
 mod shape_queries;
 mod shapes;
@@ -40,6 +41,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<distance::DistanceBatch>()?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
+    m.add_class::<robot::Robot>()?;
     motion::register(m)?;
     shapes::register(m)?;
     shape_queries::register(m)?;
