@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 
+use super::obb::Obb;
 use super::urdf::{model_error, CollisionSpec, GeometrySpec};
 use crate::bounding::shape_box::shape_box;
 use crate::bounding::Aabb;
@@ -42,6 +43,21 @@ pub(super) struct Placed {
     pub pose: Isometry3<f64>,
     pub shape: Option<Shape>,
     pub bbox: Aabb,
+    /// A mesh's own box in its pose, or a primitive's world box (`None` when unbounded).
+    pub obb: Option<Obb>,
+}
+
+impl Placed {
+    /// Whether the two are proved farther apart than `c` by their boxes (conservative).
+    pub fn apart(&self, o: &Placed, c: f64) -> bool {
+        if !boxes_within(&self.bbox, &o.bbox, c) {
+            return true;
+        }
+        match (&self.obb, &o.obb) {
+            (Some(a), Some(b)) => a.apart(b, c),
+            _ => false,
+        }
+    }
 }
 
 /// Loads meshes once per (file, scale) and resolves `package://` paths.
@@ -165,11 +181,15 @@ pub(super) fn place(geometry: &Geometry, pose: Isometry3<f64>) -> Result<Placed,
             pose,
             shape: None,
             bbox: c.world_box(&pose)?,
+            obb: Some(Obb::new(&c.bvh().bounds(), &pose)),
         },
         Geometry::Shape(s) => {
             let placed = s.placed(&pose)?;
+            let bbox = shape_box(&placed);
+            let bounded = bbox.min.iter().chain(&bbox.max).all(|x| x.is_finite());
             Placed {
-                bbox: shape_box(&placed),
+                obb: bounded.then(|| Obb::new(&bbox, &Isometry3::identity())),
+                bbox,
                 shape: Some(placed),
                 pose,
             }

@@ -45,9 +45,10 @@
 //! | which pairs are within distance `c`? (exact, closed) | [`Robot::pairs_within_distance`] | [`Robot::pairs_within_distance_batch`] |
 //! | which pair is nearest, how far, where? (certified) | [`Robot::nearest`] | [`Robot::nearest_batch`] |
 //!
-//! Each takes [`Against`]: the robot itself, its environment, or both. A cheap conservative
-//! test (world boxes of the placed parts) sets pairs aside before the exact test; the batches
-//! spread configurations over the cores.
+//! Each takes [`Against`]: the robot itself, its environment, or both. Cheap conservative
+//! tests set pairs aside before the exact test: the world boxes of the placed parts, then
+//! oriented boxes (a mesh's own box in its pose) on the 15 separating axes, with margins far
+//! above their rounding; the batches spread configurations over the cores.
 //!
 //! ```
 //! use cga_collide::robot::{Against, Robot};
@@ -74,6 +75,7 @@
 
 mod geometry;
 mod kinematics;
+mod obb;
 mod queries;
 mod urdf;
 

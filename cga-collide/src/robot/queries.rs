@@ -115,20 +115,21 @@ impl Robot {
         }
     }
 
-    /// The tested pairs for which some part pair passes `near` (boxes) and `decide` (exact);
+    /// The tested pairs for which some part pair is not proved farther apart than `reach` by
+    /// its boxes and passes `decide` (exact);
     /// stops after the first when `first`.
     fn scan(
         &self,
         q: &[f64],
         against: Against,
         first: bool,
-        near: impl Fn(&Aabb, &Aabb) -> bool,
+        reach: f64,
         decide: impl Fn(&PairTest) -> Result<bool, Error>,
     ) -> Result<Vec<(String, String)>, Error> {
         let posed = self.pose_parts(q)?;
         let mut out = Vec::new();
         for (a, o) in self.units(against) {
-            if !near(&posed.link_boxes[a], &self.other_box(&posed, o)) {
+            if !boxes_within(&posed.link_boxes[a], &self.other_box(&posed, o), reach) {
                 continue;
             }
             let others = self.members(&posed, o);
@@ -136,7 +137,7 @@ impl Robot {
             'parts: for k in self.link_parts[a].clone() {
                 let mine = (&self.parts[k].geometry, &posed.parts[k]);
                 for &theirs in &others {
-                    if !near(&mine.1.bbox, &theirs.1.bbox) {
+                    if mine.1.apart(theirs.1, reach) {
                         continue;
                     }
                     let test = PairTest {
@@ -163,7 +164,7 @@ impl Robot {
 
     /// Whether any tested pair touches at configuration `q` (stops at the first).
     pub fn collides(&self, q: &[f64], against: Against) -> Result<bool, Error> {
-        let hits = self.scan(q, against, true, |a, b| a.overlaps(b), |t| t.touches())?;
+        let hits = self.scan(q, against, true, 0.0, |t| t.touches())?;
         Ok(!hits.is_empty())
     }
 
@@ -173,7 +174,7 @@ impl Robot {
         q: &[f64],
         against: Against,
     ) -> Result<Vec<(String, String)>, Error> {
-        self.scan(q, against, false, |a, b| a.overlaps(b), |t| t.touches())
+        self.scan(q, against, false, 0.0, |t| t.touches())
     }
 
     /// Every pair within distance `c` at `q` (exact, closed: exactly `c` counts), sorted as
@@ -187,13 +188,7 @@ impl Robot {
         if !(c.is_finite() && c >= 0.0) {
             return Err(Error::InvalidClearance { value: c });
         }
-        self.scan(
-            q,
-            against,
-            false,
-            |a, b| boxes_within(a, b, c),
-            |t| t.within(c),
-        )
+        self.scan(q, against, false, c, |t| t.within(c))
     }
 
     /// The nearest tested pair at `q` and its certified distance (`None` when nothing is

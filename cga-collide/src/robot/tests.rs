@@ -133,6 +133,10 @@ fn brute(robot: &Robot, q: &[f64], c: Option<f64>) -> Vec<(String, String)> {
 #[test]
 fn answers_equal_the_brute_force_over_part_pairs() {
     let robot = arm();
+    // The shoulder's cylinder has an exact clearance test only for c = 0.
+    let mut measurable = arm();
+    measurable.exclude_pair("shoulder", "slider").unwrap();
+    measurable.exclude_pair("shoulder", "tool").unwrap();
     let qs = configs(300);
     let mut colliding = 0;
     for q in &qs {

@@ -239,12 +239,14 @@ fn joint(file: &str, doc: &Document, node: Node) -> Result<JointSpec, Error> {
         "continuous" => JointKind::Continuous,
         "prismatic" => JointKind::Prismatic,
         "fixed" => JointKind::Fixed,
-        other => return Err(model_error(
-            at,
-            format!(
+        other => {
+            return Err(model_error(
+                at,
+                format!(
                 "joint type {other:?} is not supported (revolute, continuous, prismatic, fixed)"
             ),
-        )),
+            ))
+        }
     };
     let link_of = |tag: &str| -> Result<String, Error> {
         let n = child(node, tag)
