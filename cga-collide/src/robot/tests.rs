@@ -147,10 +147,10 @@ fn answers_equal_the_brute_force_over_part_pairs() {
             !pairs.is_empty()
         );
         assert_eq!(
-            robot
+            measurable
                 .pairs_within_distance(q, 0.05, Against::Itself)
                 .unwrap(),
-            brute(&robot, q, Some(0.05))
+            brute(&measurable, q, Some(0.05))
         );
         colliding += usize::from(!pairs.is_empty());
     }
