@@ -16,6 +16,7 @@ mod placement;
 mod poses;
 mod query;
 mod render;
+mod robot;
 mod scene;
 mod self_intersect;
 mod shape_json;
@@ -58,6 +59,9 @@ enum Command {
     /// Exact intersection tests of solid primitives (boxes, capsules, cylinders, cones,
     /// half-spaces, convex hulls, balls, triangles, segments), one pair a JSON line.
     Shapes(shapes::ShapesArgs),
+    /// A robot from a URDF: its colliding link pairs (self and environment) at each
+    /// configuration of a JSON file (exact).
+    Robot(robot::RobotArgs),
 }
 
 fn run(command: Command) -> Result<()> {
@@ -70,6 +74,7 @@ fn run(command: Command) -> Result<()> {
         Command::Distance(args) => distance::run(args),
         Command::SelfIntersect(args) => self_intersect::run(args),
         Command::Shapes(args) => shapes::run(args),
+        Command::Robot(args) => robot::run(args),
     }
 }
 
