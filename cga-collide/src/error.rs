@@ -252,6 +252,22 @@ pub enum Error {
         accessor: &'static str,
     },
 
+    // ------------------------------------------------------------ robots
+    /// A robot description (URDF) or its semantic file (SRDF) was rejected: `at` names the
+    /// file, the line and the element (`panda.urdf:42: <joint name="j1">`).
+    #[error("{at}: {reason}")]
+    RobotModel {
+        /// `FILE:LINE: <element name="...">`.
+        at: String,
+        /// What is wrong and how to fix it.
+        reason: String,
+    },
+    /// A configuration does not fit the robot: wrong length or a non-finite value.
+    #[error("configuration: {reason}")]
+    Configuration {
+        /// What is wrong (the expected length, the joint whose value is not finite).
+        reason: String,
+    },
     // ------------------------------------------------------------ convex polyhedra
     /// [`ConvexPolyhedron::new`](crate::shape::polyhedron::ConvexPolyhedron::new) was given
     /// fewer than 4 vertices or 4 faces.

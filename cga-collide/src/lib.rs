@@ -15,6 +15,7 @@
 //! | [`collider`] | [`Collider`]: a mesh built once, and every question about it |
 //! | [`motion`] | continuous collision: vertex–face and edge–edge contact while points move between two poses, exactly, and the first contact time |
 //! | [`scene`] | [`scene::Scene`]: many placed colliders, a broad phase that follows them, exact answers for every pair |
+//! | [`robot`] | [`robot::Robot`]: a URDF's kinematic tree and collision geometry; self- and environment collisions, clearance and distance at any configuration |
 //! | [`hierarchy`] | the papers' sphere hierarchies: the double outer/inner sphere tree, octree sphere trees |
 //! | `gpu` | the thesis's brute-force batches on a GPU (wgpu), exact answers (feature `gpu`) |
 //! | `testing` | test oracles, adversarial inputs, plain-`f64` baselines and signs, exact-stage counters, brute-force twins, the double-sphere experiment's convex reference (feature `testing`) |
@@ -68,6 +69,7 @@ pub mod hierarchy;
 pub mod motion;
 mod parallel;
 pub mod query;
+pub mod robot;
 pub mod scene;
 pub mod shape;
 #[cfg(feature = "testing")]

@@ -20,6 +20,7 @@ const LAYERS: &[&str] = &[
     "collider",
     "motion",
     "scene",
+    "robot",
     "hierarchy",
     "gpu",
     "testing",

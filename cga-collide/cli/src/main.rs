@@ -16,6 +16,7 @@ mod placement;
 mod poses;
 mod query;
 mod render;
+mod robot;
 mod scene;
 mod self_intersect;
 mod shape_json;
@@ -62,6 +63,9 @@ enum Command {
     /// Signed distance of points to a mesh (negative inside; on the surface is inside at 0),
     /// with certified error bounds and the exact inside/outside.
     SignedDistance(signed_distance::SignedDistanceArgs),
+    /// A robot from a URDF: its colliding link pairs (self and environment) at each
+    /// configuration of a JSON file (exact).
+    Robot(robot::RobotArgs),
 }
 
 fn run(command: Command) -> Result<()> {
@@ -75,6 +79,7 @@ fn run(command: Command) -> Result<()> {
         Command::SelfIntersect(args) => self_intersect::run(args),
         Command::Shapes(args) => shapes::run(args),
         Command::SignedDistance(args) => signed_distance::run(args),
+        Command::Robot(args) => robot::run(args),
     }
 }
 

@@ -186,6 +186,22 @@ fn colliders(lines: &[Line], dir: &Path) -> Result<HashMap<String, Arc<Collider>
     Ok(out)
 }
 
+/// Builds the scene a scene file describes (objects numbered from 0 in line order), for the
+/// commands that take a scene as an environment (`cga robot --env`).
+pub fn load_scene(path: &Path) -> Result<Scene> {
+    let lines = read(path)?;
+    let built = colliders(&lines, path.parent().unwrap_or(Path::new(".")))?;
+    let mut scene = Scene::new();
+    for (k, line) in lines.iter().enumerate() {
+        match &line.source {
+            Source::Mesh(name) => scene.add(built[name].clone(), line.pose),
+            Source::Shape(shape) => scene.add_shape(shape.clone(), line.pose),
+        }
+        .with_context(|| format!("{}: object {k}", line.at))?;
+    }
+    Ok(scene)
+}
+
 fn best_of<T>(repeat: u32, mut f: impl FnMut() -> Result<T>) -> Result<(T, Duration)> {
     let mut best = Duration::MAX;
     let mut last = None;

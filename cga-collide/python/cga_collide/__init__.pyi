@@ -21,6 +21,7 @@ _ContactKind = Literal["point", "segment", "polygon"]
 _Contact = Tuple[Tuple[int, int], _ContactKind, _Float64Array]
 _ExactPoint = Tuple[Fraction, Fraction, Fraction]
 _Object = Union["Shape", "Collider"]
+_Against = Literal["self", "environment", "both"]
 _Kind = Literal["ball", "cuboid", "capsule", "cylinder", "cone", "halfspace", "convex", "triangle", "segment"]
 
 ROTATION_TOLERANCE: float
@@ -410,6 +411,71 @@ class Scene:
     def segment_hits(self, p: ArrayLike, q: ArrayLike) -> List[ObjectId]:
         """Every object whose surface the closed segment ``p``–``q`` meets, sorted."""
 
+@final
+class Robot:
+    """A robot read from a URDF: links with their collision geometry (meshes in STL, OBJ, PLY
+    or OFF, scaled; boxes, cylinders, spheres, capsules), joints (revolute, continuous,
+    prismatic, fixed). A configuration is one value per movable joint in the order of
+    ``joint_names``. Links joined by fixed joints are one body; adjacent bodies, an SRDF's
+    ``disable_collisions`` and ``exclude_pair`` pairs are not tested. Meshes are surfaces (as
+    in coal and pinocchio) unless ``set_solid(True)``. Pairs are named by link (sorted);
+    environment objects as ``"env:<i>"``. ``against`` is ``"self"``, ``"environment"`` or
+    ``"both"``. Every answer is exact for the placed parts; batches run over the cores with
+    the GIL released.
+    """
+
+    @staticmethod
+    def from_urdf(path: Union[str, PathLike[str]], package_dirs: Sequence[Union[str, PathLike[str]]] = ..., srdf: Optional[Union[str, PathLike[str]]] = None) -> Robot:
+        """Reads the URDF at ``path``; ``package://`` paths are looked up in ``package_dirs``;
+        an SRDF's ``disable_collisions`` pairs are left out when ``srdf`` is given.
+        """
+    @property
+    def dof(self) -> int:
+        """Number of movable joints (the length of a configuration)."""
+    @property
+    def joint_names(self) -> List[str]:
+        """The movable joints' names, in configuration order."""
+    @property
+    def link_names(self) -> List[str]:
+        """Every link's name, in URDF order."""
+    @property
+    def joint_limits(self) -> _Float64Array:
+        """A ``(dof, 2)`` float64 array of lower and upper limits (``-inf, inf`` for a continuous
+        joint). Limits are not enforced by the questions.
+        """
+    def allowed_pairs(self) -> List[Tuple[str, str]]:
+        """The link pairs the self questions test."""
+    def pairs_checked(self, against: _Against = "self") -> int:
+        """How many pairs a question with ``against`` tests."""
+    def exclude_pair(self, a: str, b: str) -> None:
+        """Never tests links ``a`` and ``b`` against each other."""
+    def set_solid(self, solid: bool) -> None:
+        """Meshes are solids (``True``: a part inside a closed mesh touches it) or surfaces."""
+    def set_environment(self, scene: Scene) -> None:
+        """Takes the scene's objects, as placed now, as the environment (a snapshot)."""
+    def link_poses(self, q: ArrayLike) -> _Float64Array:
+        """Every link's world pose at ``q``: a ``(links, 4, 4)`` float64 array."""
+    def collides(self, q: ArrayLike, against: _Against = "self") -> bool:
+        """Whether any tested pair touches at ``q`` (a ``(dof,)`` array; stops at the first)."""
+    def collides_batch(self, qs: ArrayLike, against: _Against = "self") -> _BoolArray:
+        """``collides`` for each row of a ``(k, dof)`` array: a ``(k,)`` bool array."""
+    def colliding_pairs(self, q: ArrayLike, against: _Against = "self") -> List[Tuple[str, str]]:
+        """Every touching pair at ``q``: a sorted list of ``(name_a, name_b)``, names sorted."""
+    def colliding_pairs_batch(self, qs: ArrayLike, against: _Against = "self") -> List[List[Tuple[str, str]]]:
+        """``colliding_pairs`` for each row of a ``(k, dof)`` array."""
+    def pairs_within_distance(self, q: ArrayLike, c: float, against: _Against = "self") -> List[Tuple[str, str]]:
+        """Every pair within distance ``c`` at ``q`` (exact, closed), sorted."""
+    def pairs_within_distance_batch(self, qs: ArrayLike, c: float, against: _Against = "self") -> List[List[Tuple[str, str]]]:
+        """``pairs_within_distance`` for each row of a ``(k, dof)`` array."""
+    def nearest(self, q: ArrayLike, against: _Against = "self") -> Optional[Tuple[Tuple[str, str], Distance]]:
+        """The nearest tested pair at ``q``: ``((name_a, name_b), Distance)`` (certified, the
+        witnesses in world coordinates, ``witness_a`` on ``name_a``), or ``None`` when nothing
+        is tested.
+        """
+    def nearest_batch(self, qs: ArrayLike, against: _Against = "self") -> List[Optional[Tuple[Tuple[str, str], Distance]]]:
+        """``nearest`` for each row of a ``(k, dof)`` array."""
+    def __repr__(self) -> str: ...
+
 MAX_MAGNITUDE: float
 """The largest magnitude a shape's coordinate, vector component or radius may have: 2^500."""
 
@@ -679,6 +745,7 @@ __all__ = [
     "MAX_MAGNITUDE",
     "ObjectId",
     "ROTATION_TOLERANCE",
+    "Robot",
     "Scene",
     "Segment",
     "Shape",

@@ -12,6 +12,7 @@ mod convert;
 mod distance;
 mod motion;
 mod points;
+mod robot;
 mod scene;
 mod shape_queries;
 mod shapes;
@@ -43,6 +44,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<points::PointDistances>()?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
+    m.add_class::<robot::Robot>()?;
     motion::register(m)?;
     shapes::register(m)?;
     shape_queries::register(m)?;

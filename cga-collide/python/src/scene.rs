@@ -51,7 +51,7 @@ fn id(i: RsObjectId) -> ObjectId {
 /// the GIL released.
 #[pyclass(module = "cga_collide")]
 pub struct Scene {
-    inner: RsScene,
+    pub(crate) inner: RsScene,
 }
 
 impl Scene {
