@@ -19,7 +19,7 @@ const EPS: f64 = f64::EPSILON;
 /// lose all relative accuracy below `f64::MIN_POSITIVE`).
 const TINY_ROOT: f64 = 2.2227587494850775e-162;
 /// The smallest positive subnormal `f64`.
-const TINY: f64 = 4.9406564584124654e-324;
+const TINY: f64 = f64::from_bits(1);
 
 /// `√q` rounded, with its bound.
 fn root(q: &Rational) -> (f64, f64) {
