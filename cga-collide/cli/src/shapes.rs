@@ -123,10 +123,12 @@ fn read(path: &Path) -> Result<Vec<(usize, Shape, Shape)>> {
     Ok(out)
 }
 
-/// The signed distance and its bound of each pair (`None` where the library does not compute
-/// it) and the mean time per pair in microseconds, or the first other error with its file
-/// and line.
-fn depths(path: &Path, pairs: &[(usize, Shape, Shape)]) -> Result<(Vec<Option<(f64, f64)>>, f64)> {
+/// A pair's signed distance and its proved bound, `None` where the library does not compute it.
+type PairDepth = Option<(f64, f64)>;
+
+/// The signed distance and its bound of each pair and the mean time per pair in microseconds,
+/// or the first other error with its file and line.
+fn depths(path: &Path, pairs: &[(usize, Shape, Shape)]) -> Result<(Vec<PairDepth>, f64)> {
     let t = Instant::now();
     let out = pairs
         .iter()
