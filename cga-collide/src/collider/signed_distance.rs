@@ -54,7 +54,7 @@ const U: f64 = f64::EPSILON / 2.0;
 /// Points per work item of the batches.
 const CHUNK: usize = 256;
 
-/// The signed distance of one point to a mesh (see the [module docs](self)).
+/// The signed distance of one point to a mesh (defined on [`Collider::signed_distance`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PointDistance {
     /// `−distance` inside, `+distance` outside; `0` on the surface (which is inside).
@@ -90,9 +90,12 @@ pub(crate) struct Nearest {
 type Examined = (f64, u32, Option<(f64, f64)>);
 
 impl Collider {
-    /// The signed distance of `p` to this mesh (see the [module docs](self)): negative inside,
-    /// `0` on the surface, with its certified error bound, the exact inside/outside, and the
-    /// nearest point and triangle.
+    /// The signed distance of `p` to this mesh: negative inside, `0` on the surface, with its
+    /// certified error bound, the exact inside/outside, and the nearest point and triangle.
+    /// Inside is [`Collider::contains_point`]'s exact answer (for a closed mesh the solid it
+    /// bounds; for an open or self-intersecting one the even–odd rule of one ray); the
+    /// distance is to the nearest point of the surface, and the true value lies within
+    /// `error_bound` of the one returned.
     ///
     /// Errors: [`Error::NonFiniteCoordinate`] or [`Error::CoordinateOutOfRange`] for a point
     /// that is not finite or beyond `2^500`, [`Error::Empty`] for a mesh without triangles,

@@ -29,7 +29,7 @@
 //! collision geometry is tested, minus an SRDF's `<disable_collisions>`
 //! ([`Robot::disable_from_srdf`]) and the caller's exclusions ([`Robot::exclude_pair`]);
 //! [`Robot::allowed_pairs`] lists them. Pairs are named by link; an environment object
-//! ([`Robot::set_environment`], a [`Scene`](crate::scene::Scene)) is named `env:<i>`, `i` its
+//! ([`Robot::set_environment`], a [`Scene`]) is named `env:<i>`, `i` its
 //! [`ObjectId::index`](crate::scene::ObjectId::index).
 //!
 //! # What touching means

@@ -84,8 +84,8 @@ pub enum SignedDistanceKind {
     Penetrating,
 }
 
-/// A signed distance with a proved error bound, its direction and witness points (see the
-/// [module docs](self) for the definition).
+/// A signed distance with a proved error bound, its direction and witness points (defined on
+/// [`signed_distance`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SignedDistance {
     /// The signed distance in `f64`: the distance when apart, minus the penetration depth
@@ -124,8 +124,12 @@ fn unsupported(a: &Shape, b: &Shape) -> Error {
 
 /// The signed distance of two shapes: their distance when apart, minus the penetration depth
 /// when they overlap, with a proved error bound, the normal from `a` to `b` and witness
-/// points. See the [module docs](self) for the definition and the pairs refused with
-/// [`Error::UnsupportedPair`].
+/// points. Apart, it is their distance; touching, `0`; overlapping, minus the penetration depth
+/// (the length of the shortest translation of `b` after which the two only touch); translating
+/// `b` by `−value · normal` brings them into touching contact. Refused with
+/// [`Error::UnsupportedPair`]: a cylinder or cone that meets the other shape, two half-spaces
+/// whose normals are not opposite (no finite depth), overlapping hulls of more than
+/// [`MAX_HULL_POINTS`] distinct points.
 ///
 /// ```
 /// use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::Cuboid};
