@@ -52,13 +52,24 @@ fn colliding_pairs_per_configuration_in_the_issue_layout() {
     assert_eq!(v["configs"], 3);
     assert_eq!(v["pairs_checked"], 12);
     // Straight up: free. Shoulder lifted past the horizontal: the forearm and the slider at
-    // its end go into the base. Elbow bent down: the slider meets the column.
+    // its end go into the base. Elbow bent down by 1.5 rad: the forearm (0.4 long from the
+    // elbow at z = 0.9) points along (cos 1.5, 0, −sin 1.5), so its end, the slider's centre,
+    // is at (0.028, 0, 0.501): the slider and the tool sphere (0.03 further along the slider's
+    // x) lie in the column's top (|x| ≤ 0.05, z ≤ 0.5) and within 0.03–0.05 of the shoulder
+    // cylinder's axis (the y axis through z = 0.5, radius 0.08), and the forearm's end face
+    // dips below z = 0.5 into the column.
     assert_eq!(
         v["colliding"],
         json!([
             [],
             [["base", "fore"], ["base", "slider"]],
-            [["column", "slider"]]
+            [
+                ["column", "fore"],
+                ["column", "slider"],
+                ["column", "tool"],
+                ["shoulder", "slider"],
+                ["shoulder", "tool"]
+            ]
         ])
     );
     assert!(v["micros_per_config"].as_f64().unwrap() > 0.0);
