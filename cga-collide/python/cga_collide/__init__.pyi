@@ -82,6 +82,7 @@ class PointDistances:
         """``(n,)`` int64."""
     def __len__(self) -> int: ...
 
+@final
 class DistanceBatch:
     """The certified distances of a batch, as arrays: ``distance`` and ``error_bound`` ``(k,)``,
     ``witness_a`` and ``witness_b`` ``(k, 3)``, ``triangles`` ``(k, 2)`` int64 (``-1`` where not
@@ -686,6 +687,7 @@ def distance_at(a: _Object, pose_a: ArrayLike, b: _Object, pose_b: ArrayLike) ->
 def distance_batch(a: _Object, b: _Object, poses_a: ArrayLike, poses_b: ArrayLike) -> DistanceBatch:
     """``distance_at`` for every pose pair: a ``DistanceBatch`` of arrays."""
 
+@final
 class SignedDistance:
     """A certified signed distance between two shapes: ``value`` is the distance when they are
     apart and minus the penetration depth (the shortest translation of ``b`` that separates
