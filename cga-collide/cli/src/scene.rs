@@ -191,7 +191,13 @@ fn colliders(lines: &[Line], dir: &Path) -> Result<HashMap<String, Arc<Collider>
 pub fn load_scene(path: &Path) -> Result<Scene> {
     let lines = read(path)?;
     let built = colliders(&lines, path.parent().unwrap_or(Path::new(".")))?;
+    scene_of(&lines, &built, false)
+}
+
+/// A scene of the file's objects in line order, its meshes from `built`.
+fn scene_of(lines: &[Line], built: &HashMap<String, Arc<Collider>>, solid: bool) -> Result<Scene> {
     let mut scene = Scene::new();
+    scene.set_solid(solid);
     for (k, line) in lines.iter().enumerate() {
         match &line.source {
             Source::Mesh(name) => scene.add(built[name].clone(), line.pose),
@@ -236,18 +242,7 @@ pub fn run(args: SceneArgs) -> Result<()> {
     let t = Instant::now();
     let built = colliders(&lines, dir)?;
     let millis_colliders = millis(t.elapsed());
-    let (scene, millis_build) = best_of(args.repeat, || {
-        let mut scene = Scene::new();
-        scene.set_solid(args.solid);
-        for (k, line) in lines.iter().enumerate() {
-            match &line.source {
-                Source::Mesh(name) => scene.add(built[name].clone(), line.pose),
-                Source::Shape(shape) => scene.add_shape(shape.clone(), line.pose),
-            }
-            .with_context(|| format!("{}: object {k}", line.at))?;
-        }
-        Ok(scene)
-    })?;
+    let (scene, millis_build) = best_of(args.repeat, || scene_of(&lines, &built, args.solid))?;
     let ask = |scene: &Scene| -> Result<Vec<(ObjectId, ObjectId)>> {
         Ok(match args.clearance {
             Some(c) => scene.pairs_within_distance(c)?,
