@@ -628,6 +628,15 @@ class ConvexHull(Shape):
     @property
     def points(self) -> _Float64Array:
         """The points as given, a fresh ``(n, 3)`` float64 array."""
+    @property
+    def corners(self) -> _Float64Array:
+        """The hull's corners, exactly, a fresh ``(k, 3)`` float64 array."""
+    @property
+    def triangles(self) -> _Int64Array:
+        """A solid hull's boundary triangles (rows of ``corners``), ``(m, 3)`` int64."""
+    @property
+    def dimension(self) -> int:
+        """0 point, 1 segment, 2 flat polygon, 3 solid."""
 
 @final
 class Triangle(Shape):

@@ -424,6 +424,40 @@ impl ConvexHull {
         };
         rows(slf.py(), &rows_of)
     }
+
+    /// The hull's corners, exactly (a point one ulp outside a face is a corner, one inside is
+    /// not), a fresh ``(k, 3)`` float64 array: a flat polygon's in boundary order.
+    #[getter]
+    fn corners<'py>(slf: &Bound<'py, Self>) -> F64s2<'py> {
+        let rows_of: Vec<[f64; 3]> = hull_of(slf)
+            .map(|h| h.corners().iter().map(|p| [p.x, p.y, p.z]).collect())
+            .unwrap_or_default();
+        rows(slf.py(), &rows_of)
+    }
+
+    /// For a solid hull, its boundary as triangles of row indices into ``corners``,
+    /// counter-clockwise seen from outside, an ``(m, 3)`` int64 array; ``(0, 3)`` for a point,
+    /// segment or flat polygon.
+    #[getter]
+    fn triangles<'py>(slf: &Bound<'py, Self>) -> Bound<'py, PyArray2<i64>> {
+        let t: Vec<[u32; 3]> = hull_of(slf).map(|h| h.triangles().to_vec()).unwrap_or_default();
+        Array2::from_shape_fn((t.len(), 3), |(i, c)| i64::from(t[i][c])).into_pyarray(slf.py())
+    }
+
+    /// 0 for a point, 1 for a segment, 2 for a flat polygon, 3 for a solid.
+    #[getter]
+    fn dimension(slf: &Bound<'_, Self>) -> u8 {
+        hull_of(slf).map_or(0, |h| h.dimension())
+    }
+}
+
+/// The library hull a Python `ConvexHull` holds.
+fn hull_of<'a>(slf: &'a Bound<'_, ConvexHull>) -> Option<&'a RsConvexHull> {
+    match &slf.as_super().get().inner {
+        Shape::ConvexHull(h) => Some(h),
+        // The base of a `ConvexHull` always holds a hull (`init`).
+        _ => None,
+    }
 }
 
 /// The closed triangle ``abc`` (``(3,)`` each; collinear corners give the segment or point

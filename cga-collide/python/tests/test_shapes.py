@@ -411,3 +411,24 @@ def test_the_trimesh_drop_in_keeps_meshes_as_meshes():
         assert type(collider) is cc.Collider and not isinstance(collider, cc.Shape)
         assert collider.num_triangles == len(mesh.faces)
         assert np.array_equal(collider.vertices, mesh.vertices)
+
+
+def test_convex_hull_corners_are_exact():
+    """The hull keeps only its corners: points inside, on faces and on edges go; a point one
+    ulp outside a face is a corner, one ulp inside is not."""
+    cube = np.array([[i & 1, i >> 1 & 1, i >> 2 & 1] for i in range(8)], dtype=float)
+    extras = np.array([[0.5, 0.5, 0.5], [0.5, 0.5, 1.0], [0.5, 0.0, 0.0], [1.0, 1.0, 1.0]])
+    h = cc.ConvexHull(np.vstack([cube, extras]))
+    assert h.dimension == 3
+    assert h.corners.shape == (8, 3)
+    assert {tuple(c) for c in h.corners} == {tuple(c) for c in cube}
+    assert h.triangles.shape == (12, 3) and h.triangles.dtype == np.int64
+    assert h.points.shape == (12, 3)
+    outside = cc.ConvexHull(np.vstack([cube, [[0.5, 0.5, np.nextafter(1.0, 2.0)]]]))
+    assert outside.corners.shape == (9, 3)
+    inside = cc.ConvexHull(np.vstack([cube, [[0.5, 0.5, np.nextafter(1.0, 0.0)]]]))
+    assert inside.corners.shape == (8, 3)
+    flat = cc.ConvexHull([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0, 0]])
+    assert (flat.dimension, flat.corners.shape, flat.triangles.shape) == (2, (4, 3), (0, 3))
+    assert cc.ConvexHull([[1, 2, 3]]).dimension == 0
+    assert cc.ConvexHull([[0, 0, 0], [1, 1, 1], [2, 2, 2]]).corners.shape == (2, 3)

@@ -38,6 +38,7 @@ mod cone;
 mod convex_hull;
 mod cuboid;
 mod cylinder;
+mod exact_hull;
 mod half_space;
 pub(crate) mod limits;
 pub mod mesh;

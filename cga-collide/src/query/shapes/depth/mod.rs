@@ -30,7 +30,7 @@
 //! their certified distance when they are apart; when they meet the pair is
 //! [`Error::UnsupportedPair`] (their depth is not computed yet). Two half-spaces whose
 //! normals are not opposite have no finite depth and are also [`Error::UnsupportedPair`], as
-//! are overlapping hulls of more than [`MAX_HULL_POINTS`] distinct points.
+//! are overlapping hulls of more than [`MAX_HULL_POINTS`] corners.
 //!
 //! # Error bound
 //! The true signed distance of the shapes the `f64` inputs denote lies in
@@ -129,7 +129,7 @@ fn unsupported(a: &Shape, b: &Shape) -> Error {
 /// `b` by `−value · normal` brings them into touching contact. Refused with
 /// [`Error::UnsupportedPair`]: a cylinder or cone that meets the other shape, two half-spaces
 /// whose normals are not opposite (no finite depth), overlapping hulls of more than
-/// [`MAX_HULL_POINTS`] distinct points.
+/// [`MAX_HULL_POINTS`] corners.
 ///
 /// ```
 /// use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::Cuboid};

@@ -6,10 +6,12 @@
 //! function `h_M(n) = h_P(n) + h_Q(−n)`. The minimum is attained at a facet normal of `M`
 //! (or, when `M` is flat, at a normal of its plane, where it is 0), and every facet of the
 //! Minkowski sum is a face of `P` plus a face of `−Q`, so its normal is the cross product of
-//! two edge directions of `P` and `Q`. This module takes a finite superset of those normals —
-//! the cross products of every two *directions* of the two cores (for a hull: every
-//! difference of two of its points), each direction crossed with the coordinate axes, and the
-//! axes — and minimises `(h_P(n) + h_Q(−n)) / |n|` over it. Any candidate only gives an upper
+//! two edge directions of `P` and `Q`: a facet normal of `P`, one of `Q`, or an edge of `P`
+//! crossed with an edge of `Q`. This module takes a finite superset of those normals — every
+//! direction of `P` crossed with every direction of `Q`, the facet normals of each core (for
+//! the small cores every cross product of two of its directions; for an exact hull two edges
+//! of each boundary triangle), each direction crossed with the coordinate axes, and the axes —
+//! and minimises `(h_P(n) + h_Q(−n)) / |n|` over it. Any candidate only gives an upper
 //! bound of the depth (`h_M(n) ≥ depth·|n|` for every `n`), so extra candidates are harmless.
 //!
 //! The minimum is found in two passes: every candidate is evaluated on [`ErrF64`] (a proved
@@ -22,13 +24,14 @@ use nalgebra::{Point3, Vector3};
 
 use crate::exact::vector::{cross, dot};
 use crate::exact::ErrF64;
-use crate::shape::Shape;
+use crate::shape::{ConvexHull, Shape};
 
 type P3 = [f64; 3];
 
-/// The largest number of distinct points of a hull whose penetration depth is computed (the
-/// candidate set grows as the fourth power of the point count).
-pub const MAX_HULL_POINTS: usize = 32;
+/// The largest number of corners of a hull whose penetration depth is computed (the candidate
+/// set grows as the product of the two shapes' edge counts, and each candidate is evaluated at
+/// every corner).
+pub const MAX_HULL_POINTS: usize = 128;
 
 /// An exact point or vector: the exact sum of up to four `f64` vectors (a cuboid's corner
 /// `c ± U ± V ± W`, the difference of two points); negation is exact, so signs live in the
@@ -70,11 +73,13 @@ impl Sum {
     }
 }
 
-/// A shape as core ⊕ ball(radius), with the core's points and a set of directions that
-/// contains every edge direction of the core.
+/// A shape as core ⊕ ball(radius), with the core's points, a set of directions that contains
+/// every edge direction of the core, and the pairs of those directions whose cross products
+/// contain every facet normal of the core (`None`: every pair).
 pub(super) struct Core {
     pub(super) points: Vec<Sum>,
     pub(super) directions: Vec<Sum>,
+    pub(super) facet_pairs: Option<Vec<(usize, usize)>>,
     pub(super) radius: f64,
 }
 
@@ -100,6 +105,7 @@ impl Core {
             Core {
                 points: pts.iter().map(|p| Sum::of(&[*p])).collect(),
                 directions,
+                facet_pairs: None,
                 radius,
             }
         };
@@ -109,11 +115,10 @@ impl Core {
             Shape::Segment(s) => polygon(&[p3(s.a()), p3(s.b())], 0.0),
             Shape::Triangle(t) => polygon(&t.vertices().map(|p| p3(&p)), 0.0),
             Shape::ConvexHull(h) => {
-                let pts: Vec<P3> = h.extreme_points().iter().map(p3).collect();
-                if pts.len() > MAX_HULL_POINTS {
+                if h.corners().len() > MAX_HULL_POINTS {
                     return None;
                 }
-                polygon(&pts, 0.0)
+                hull_core(h)
             }
             Shape::Cuboid(c) => {
                 let axes = c.half_axes().map(|a| v3(&a));
@@ -134,11 +139,62 @@ impl Core {
                 Core {
                     points,
                     directions: axes.iter().map(|a| Sum::of(&[*a])).collect(),
+                    facet_pairs: None,
                     radius: 0.0,
                 }
             }
             Shape::HalfSpace(_) | Shape::Cylinder(_) | Shape::Cone(_) => return None,
         })
+    }
+}
+
+/// The core of an exact hull: its corners; as directions its edges (a flat polygon's
+/// boundary edges, a solid's triangulation edges, diagonals of facets included), which contain
+/// every edge direction; as facet pairs two edges of each triangle (a solid) or of the polygon.
+fn hull_core(h: &ConvexHull) -> Core {
+    let corners: Vec<P3> = h.corners().iter().map(p3).collect();
+    let mut edges: Vec<(u32, u32)> = Vec::new();
+    let mut facet_pairs = Vec::new();
+    let mut edge_index = |u: u32, v: u32, edges: &mut Vec<(u32, u32)>| {
+        let key = (u.min(v), u.max(v));
+        match edges.iter().position(|e| *e == key) {
+            Some(i) => i,
+            None => {
+                edges.push(key);
+                edges.len() - 1
+            }
+        }
+    };
+    match h.dimension() {
+        3 => {
+            for t in h.triangles() {
+                let i = edge_index(t[0], t[1], &mut edges);
+                let j = edge_index(t[0], t[2], &mut edges);
+                edge_index(t[1], t[2], &mut edges);
+                facet_pairs.push((i, j));
+            }
+        }
+        _ => {
+            let n = corners.len() as u32;
+            for k in 0..n {
+                // A segment's two corners give one edge (twice, deduplicated).
+                if n > 1 {
+                    edge_index(k, (k + 1) % n, &mut edges);
+                }
+            }
+            if edges.len() >= 2 {
+                facet_pairs.push((0, 1));
+            }
+        }
+    }
+    Core {
+        points: corners.iter().map(|p| Sum::of(&[*p])).collect(),
+        directions: edges
+            .iter()
+            .map(|&(u, v)| Sum::difference(&corners[v as usize], &corners[u as usize]))
+            .collect(),
+        facet_pairs: Some(facet_pairs),
+        radius: 0.0,
     }
 }
 
@@ -179,11 +235,31 @@ impl Candidate {
     }
 }
 
-fn candidates(directions: usize) -> Vec<Candidate> {
+/// The candidate normals of `P − Q`: the axes, every direction crossed with an axis, the
+/// facet pairs of each core, and every direction of `P` crossed with every direction of `Q`.
+fn candidates(a: &Core, b: &Core) -> Vec<Candidate> {
+    let (na, nb) = (a.directions.len(), b.directions.len());
     let mut lines: Vec<Line> = (0..3).map(Line::Axis).collect();
-    for i in 0..directions {
+    for i in 0..na + nb {
         lines.extend((0..3).map(|k| Line::WithAxis(i, k)));
-        lines.extend((i + 1..directions).map(|j| Line::Pair(i, j)));
+    }
+    for (core, offset) in [(a, 0), (b, na)] {
+        let n = core.directions.len();
+        match &core.facet_pairs {
+            Some(pairs) => lines.extend(
+                pairs
+                    .iter()
+                    .map(|&(i, j)| Line::Pair(offset + i, offset + j)),
+            ),
+            None => {
+                for i in 0..n {
+                    lines.extend((i + 1..n).map(|j| Line::Pair(offset + i, offset + j)));
+                }
+            }
+        }
+    }
+    for i in 0..na {
+        lines.extend((0..nb).map(|j| Line::Pair(i, na + j)));
     }
     lines
         .into_iter()
@@ -270,7 +346,7 @@ fn exact_max(points: &[[Rational; 3]], n: &[Rational; 3]) -> (usize, Rational) {
 /// they meet), its normal and support points.
 pub(super) fn depth(a: &Core, b: &Core) -> Depth {
     let directions: Vec<Sum> = a.directions.iter().chain(&b.directions).copied().collect();
-    let all = candidates(directions.len());
+    let all = candidates(a, b);
     let lift_e = |s: &Sum| s.lift(&ErrF64::exact);
     let (pe, qe): (Vec<E3>, Vec<E3>) = (
         a.points.iter().map(lift_e).collect(),
