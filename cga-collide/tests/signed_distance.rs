@@ -235,3 +235,34 @@ proptest! {
         }
     }
 }
+
+/// Points around the vertices and edge midpoints of `mesh`, off in random directions at
+/// several distances (nearest to an edge or a vertex far more often than points near faces).
+fn around_edges_and_vertices(mesh: &TriMesh, n: usize, seed: u64) -> Vec<Point3<f64>> {
+    let mut rng = Rng(seed | 1);
+    let mut out = Vec::new();
+    for _ in 0..n {
+        let t = (rng.next() % mesh.num_triangles() as u64) as u32;
+        let [a, b, _] = mesh.corners(t);
+        let size = (b - a).norm();
+        for base in [a, a + (b - a) * 0.5] {
+            for scale in [1e-9, 1e-3, 0.3, 3.0] {
+                let dir = Vector3::new(rng.unit() - 0.5, rng.unit() - 0.5, rng.unit() - 0.5);
+                out.push(base + dir * (scale * size));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn points_nearest_to_edges_and_vertices_have_exact_signs() {
+    let c = Collider::new(cube());
+    check_all(&c, &around_edges_and_vertices(c.mesh(), 12, 3));
+    let b = bunny();
+    let points = around_edges_and_vertices(b.mesh(), 150, 5);
+    let answers = b.signed_distances(&points).unwrap();
+    for (p, r) in points.iter().zip(&answers) {
+        assert_eq!(r.inside, b.contains_point(p), "wrong sign at {p:?}: {r:?}");
+    }
+}

@@ -11,18 +11,19 @@ Deliberate differences from trimesh's FCL-backed manager (see ``docs/python.md``
 * Collision means the closed surfaces share a point, exactly: touching counts. FCL answers
   near-contact by rounding, after a cast to float32.
 * ``ContactData.point`` is a point of the exact intersection of the contact's triangle pair
-  (the mean of its corners); FCL picks a point of its own. ``normal`` and ``depth`` are those
-  of the minimum translation separating the two objects' convex hulls (separating-axis test),
-  the same for every contact of one object pair; FCL gives per-contact estimates.
-* When objects collide, ``min_distance_*`` is minus the convex-hull penetration depth of one
-  colliding pair (the first found, as FCL stops at the first colliding pair it meets), not
-  necessarily the deepest; for non-convex objects the depth is an estimate, as FCL's is.
+  (the mean of its corners); FCL picks a point of its own. ``depth`` and ``normal`` are the
+  object pair's penetration depth and its direction (from the first object towards the
+  second), the same for every contact of the pair: for two convex meshes (checked exactly,
+  at most 32 distinct vertices each) the exact penetration depth (the shortest separating
+  translation, proved to a few ulps); for other closed meshes the depth of the deepest
+  vertex of one inside the other (a certified lower bound of the penetration depth); for open
+  meshes, which bound no solid, ``0`` with the contact triangle's face normal.
+  ``ContactData.depth_kind`` says which (``"exact"``, ``"vertex"``, ``"none"``). FCL gives
+  per-contact estimates.
+* When objects collide, ``min_distance_*`` is minus that depth for one colliding pair (the
+  first found, as FCL stops at the first colliding pair it meets), not necessarily the deepest.
 * A transform must be a rigid motion (rotation and translation, ``max |RᵀR − I| <= 1e-6``):
   scale and shear are refused with a ``CgaError`` rather than silently mishandled.
-
-Contact normals, depths and the negative distances of colliding objects come from convex
-hulls computed with scipy (``pip install 'cga-collide[trimesh]'``); without scipy those
-requests raise an ``ImportError`` that says so, and yes/no and distance answers still work.
 """
 
 from __future__ import annotations
@@ -33,101 +34,11 @@ from typing import Any, Dict, Iterable, List, Optional, Set, Tuple
 import numpy as np
 
 from . import Collider, ObjectId, Scene
+from ._trimesh_depth import Depth, Solid, face_normal, pair_depth
 
 __all__ = ["CollisionManager", "ContactData", "DistanceData", "mesh_to_collider"]
 
 _EXTERNAL = "__external"
-# Above this many edge pairs the convex-hull depth uses face normals only (an upper bound of
-# the depth, close for rounded hulls with many faces).
-_MAX_EDGE_AXES = 4096
-
-
-class _Hull:
-    """The convex hull of a mesh in its own frame: vertices, unit face normals, unit edge
-    directions (for the separating-axis penetration depth)."""
-
-    __slots__ = ("vertices", "normals", "edges")
-
-    def __init__(self, vertices: np.ndarray, faces: np.ndarray):
-        points = np.asarray(vertices, dtype=np.float64)
-        hull = _convex_hull(points)
-        if hull is not None:
-            verts = points[hull.vertices]
-            normals = hull.equations[:, :3]
-            simplices = hull.simplices
-        else:  # flat or tiny meshes have no solid hull: the mesh itself stands in
-            verts = points
-            simplices = np.asarray(faces)
-            a, b, c = (points[simplices[:, k]] for k in range(3))
-            normals = np.cross(b - a, c - a)
-        edges = np.concatenate(
-            [
-                points[simplices[:, 1]] - points[simplices[:, 0]],
-                points[simplices[:, 2]] - points[simplices[:, 1]],
-                points[simplices[:, 0]] - points[simplices[:, 2]],
-            ]
-        )
-        self.vertices = verts
-        self.normals = _unique_directions(normals)
-        self.edges = _unique_directions(edges)
-
-
-def _convex_hull(points: np.ndarray) -> Any:
-    """scipy's convex hull of ``points``, or ``None`` where qhull finds no solid hull (a flat
-    mesh, fewer than four points)."""
-    try:
-        # scipy ships no type information (scipy-stubs is a package of its own).
-        from scipy.spatial import ConvexHull, QhullError  # type: ignore[import-untyped]
-    except ImportError as e:
-        raise ImportError(
-            "cga_collide.trimesh needs scipy for contact normals and penetration depths "
-            "(convex hulls): pip install 'cga-collide[trimesh]' (or 'cga-collide[scipy]')"
-        ) from e
-    try:
-        return ConvexHull(points)
-    except QhullError:
-        return None
-
-
-def _unique_directions(v: np.ndarray) -> np.ndarray:
-    """Unit vectors of ``v`` (zero rows dropped), one per direction up to sign."""
-    v = np.asarray(v, dtype=np.float64).reshape(-1, 3)
-    n = np.linalg.norm(v, axis=1)
-    v = v[n > 1e-300] / n[n > 1e-300, None]
-    # one sign per direction: the first non-zero component positive
-    first = np.argmax(np.abs(v) > 1e-12, axis=1)
-    sign = np.sign(v[np.arange(len(v)), first])
-    sign[sign == 0] = 1.0
-    v = v * sign[:, None]
-    if len(v) == 0:
-        return v
-    _, keep = np.unique(np.round(v, 9), axis=0, return_index=True)
-    return v[np.sort(keep)]
-
-
-def _penetration(
-    hull_a: _Hull, pose_a: np.ndarray, hull_b: _Hull, pose_b: np.ndarray
-) -> Tuple[float, np.ndarray]:
-    """Depth and unit normal (from a towards b) of the minimum translation separating the
-    convex hulls, by the separating-axis test over face normals and edge-pair cross products.
-    A depth <= 0 means the hulls are apart along the normal."""
-    ra, rb = pose_a[:3, :3], pose_b[:3, :3]
-    va = hull_a.vertices @ ra.T + pose_a[:3, 3]
-    vb = hull_b.vertices @ rb.T + pose_b[:3, 3]
-    candidates = [hull_a.normals @ ra.T, hull_b.normals @ rb.T]
-    ea, eb = hull_a.edges @ ra.T, hull_b.edges @ rb.T
-    if len(ea) * len(eb) <= _MAX_EDGE_AXES:
-        cross = np.cross(ea[:, None, :], eb[None, :, :]).reshape(-1, 3)
-        norm = np.linalg.norm(cross, axis=1)
-        candidates.append(cross[norm > 1e-9] / norm[norm > 1e-9, None])
-    axes = np.concatenate(candidates)
-    pa, pb = va @ axes.T, vb @ axes.T
-    forward = pa.max(axis=0) - pb.min(axis=0)  # push b along +axis
-    backward = pb.max(axis=0) - pa.min(axis=0)  # push b along -axis
-    overlap = np.minimum(forward, backward)
-    k = int(np.argmin(overlap))
-    normal = axes[k] if forward[k] <= backward[k] else -axes[k]
-    return float(overlap[k]), normal
 
 
 def _as_transform(transform: Any) -> np.ndarray:
@@ -140,21 +51,21 @@ def _as_transform(transform: Any) -> np.ndarray:
 
 
 class _Geometry:
-    """A mesh built once: its collider and (lazily) its convex hull."""
+    """A mesh built once: its collider and (lazily) its solid for depths."""
 
-    __slots__ = ("collider", "_hull", "_vertices", "_faces")
+    __slots__ = ("collider", "_vertices", "_faces", "_solid")
 
     def __init__(self, vertices: np.ndarray, faces: np.ndarray):
         self._vertices = vertices
         self._faces = faces
         self.collider = Collider(vertices, faces)
-        self._hull: Optional[_Hull] = None
+        self._solid: Optional[Solid] = None
 
     @property
-    def hull(self) -> _Hull:
-        if self._hull is None:
-            self._hull = _Hull(self._vertices, self._faces)
-        return self._hull
+    def solid(self) -> Solid:
+        if self._solid is None:
+            self._solid = Solid.of(self._vertices, self._faces)
+        return self._solid
 
 
 def _arrays(mesh: Any) -> Tuple[np.ndarray, np.ndarray]:
@@ -195,9 +106,9 @@ class ContactData:
     """One contact between two objects: a pair of intersecting triangles.
 
     ``names`` is the set of the two object names; ``point`` a point of the exact intersection
-    of the two triangles; ``normal`` and ``depth`` the direction and depth of the minimum
-    translation separating the objects' convex hulls; ``index(name)`` the triangle of the
-    named object."""
+    of the two triangles; ``depth`` and ``normal`` the penetration depth of the two objects
+    and its direction, as the module docs define them (``depth_kind`` says which definition
+    applied); ``index(name)`` the triangle of the named object."""
 
     def __init__(
         self,
@@ -206,12 +117,14 @@ class ContactData:
         point: np.ndarray,
         normal: np.ndarray,
         depth: float,
+        depth_kind: str = "exact",
     ):
         self.names = set(names)
         self._inds = {names[0]: int(indices[0]), names[1]: int(indices[1])}
         self._point = np.asarray(point, dtype=np.float64)
         self._normal = np.asarray(normal, dtype=np.float64)
         self._depth = float(depth)
+        self._depth_kind = depth_kind
 
     @property
     def normal(self) -> np.ndarray:
@@ -225,8 +138,14 @@ class ContactData:
 
     @property
     def depth(self) -> float:
-        """float: the penetration depth."""
+        """float: the penetration depth (``>= 0``)."""
         return self._depth
+
+    @property
+    def depth_kind(self) -> str:
+        """``"exact"`` (two convex meshes: the exact penetration depth), ``"vertex"`` (closed
+        meshes: the deepest vertex, a certified lower bound) or ``"none"`` (an open mesh: 0)."""
+        return self._depth_kind
 
     def index(self, name: str) -> int:
         """The index of the triangle of object ``name`` in this contact."""
@@ -281,19 +200,34 @@ class _Placed:
         self.id = oid
 
 
-def _contact_data(
-    a: _Placed, name_a: str, b: _Placed, name_b: str, depth_normal=None
-) -> List[ContactData]:
-    """Every contact (intersecting triangle pair) of two placed objects."""
-    depth, normal = depth_normal or _penetration(
-        a.geometry.hull, a.transform, b.geometry.hull, b.transform
-    )
-    depth = max(depth, 0.0)
+def _depth(a: _Placed, b: _Placed) -> Depth:
+    """The penetration depth of two placed objects (``cga_collide._trimesh_depth``)."""
+    return pair_depth(
+        a.geometry.solid, a.geometry.collider, a.transform,
+        b.geometry.solid, b.geometry.collider, b.transform,
+    )  # fmt: skip
+
+
+def _contact_normal(depth: Depth, b: _Placed, triangle_b: int) -> np.ndarray:
+    """The pair's normal, or (none known) the reversed normal of ``b``'s contact triangle."""
+    if depth.normal is not None:
+        return depth.normal
+    n = face_normal(b.geometry.collider, b.transform, triangle_b)
+    return -n if n is not None else np.array([0.0, 0.0, 1.0])
+
+
+def _contact_data(a: _Placed, name_a: str, b: _Placed, name_b: str) -> List[ContactData]:
+    """Every contact (intersecting triangle pair) of two placed objects, each with the pair's
+    penetration depth and normal."""
+    depth = _depth(a, b)
     out = []
     for ij, _kind, points in a.geometry.collider.contacts_at(
         a.transform, b.geometry.collider, b.transform
     ):
-        out.append(ContactData((name_a, name_b), ij, points.mean(axis=0), normal, depth))
+        normal = _contact_normal(depth, b, ij[1])
+        out.append(
+            ContactData((name_a, name_b), ij, points.mean(axis=0), normal, depth.depth, depth.kind)
+        )
     return out
 
 
@@ -301,18 +235,21 @@ def _signed(
     a: _Placed, b: _Placed, points: bool = True
 ) -> Tuple[float, Tuple[int, int], np.ndarray, np.ndarray]:
     """Signed distance of two placed objects, with triangles and points: the certified
-    distance when the surfaces are apart, minus the convex-hull penetration depth when they
-    touch (then both points are one point of the exact contact when ``points``, else NaN: the
-    exact contact geometry costs more than the rest)."""
+    distance when the surfaces are apart, minus the penetration depth when they touch (then
+    the points are the depth's witnesses, or one point of the exact contact where the depth has
+    none; the triangles are those of one contact when ``points``, else ``-1`` and the points
+    NaN: the exact contact geometry costs more than the rest)."""
     ca, cb = a.geometry.collider, b.geometry.collider
     if ca.collides_at(a.transform, cb, b.transform):
-        depth, _ = _penetration(a.geometry.hull, a.transform, b.geometry.hull, b.transform)
+        depth = _depth(a, b)
         if not points:
-            return -max(depth, 0.0), (-1, -1), np.full(3, np.nan), np.full(3, np.nan)
+            return -depth.depth, (-1, -1), np.full(3, np.nan), np.full(3, np.nan)
         contacts = ca.contacts_at(a.transform, cb, b.transform)
         ij, _, pts = contacts[0]
+        if depth.witness_a is not None and depth.witness_b is not None:
+            return -depth.depth, ij, depth.witness_a, depth.witness_b
         p = pts.mean(axis=0)
-        return -max(depth, 0.0), ij, p, p
+        return -depth.depth, ij, p, p
     d = ca.distance_at(a.transform, cb, b.transform)
     ij = d.triangles if d.triangles is not None else (-1, -1)
     return d.distance, ij, d.witness_a, d.witness_b

@@ -95,7 +95,7 @@ def test_agrees_with_colliders(box):
 
 
 class Square:
-    """A flat mesh (two triangles): qhull finds no solid hull, the mesh stands in for it."""
+    """A flat mesh (two triangles): open, it bounds no solid."""
 
     vertices = np.array([[-1.0, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]])
     faces = np.array([[0, 1, 2], [0, 2, 3]])
@@ -108,16 +108,15 @@ def test_flat_meshes_get_contact_data():
     hit, data = m.in_collision_internal(return_data=True)
     assert hit and data
     for c in data:
-        assert np.isfinite(c.point).all() and np.isclose(np.linalg.norm(c.normal), 1.0) and c.depth >= 0.0
+        assert np.isfinite(c.point).all() and np.isclose(np.linalg.norm(c.normal), 1.0)
+        assert c.depth == 0.0 and c.depth_kind == "none"
 
 
-def test_without_scipy_contact_data_names_the_extra(monkeypatch, box):
+def test_contact_data_needs_no_scipy(monkeypatch, box):
     monkeypatch.setitem(sys.modules, "scipy.spatial", None)  # `from scipy.spatial import` fails
+    monkeypatch.setitem(sys.modules, "scipy", None)
     m = CollisionManager()
     m.add_object("a", box)
     m.add_object("b", box, translation(0.5))
-    # yes/no and names need no convex hull ...
-    assert m.in_collision_internal(return_names=True) == (True, {("a", "b")})
-    # ... contact data does, and says which extra brings scipy
-    with pytest.raises(ImportError, match=r"pip install 'cga-collide\[trimesh\]'"):
-        m.in_collision_internal(return_data=True)
+    hit, data = m.in_collision_internal(return_data=True)
+    assert hit and data and all(c.depth == 0.5 and c.depth_kind == "exact" for c in data)

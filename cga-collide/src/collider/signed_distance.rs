@@ -21,13 +21,26 @@
 //! mesh distance is (an exact clearance test of the winner for the upper end, exact tests of
 //! the few triangles not proved farther for the lower end).
 //!
-//! The sign comes from the nearest face when that is certain: the mesh is closed, consistently
-//! oriented and free of self-intersections (checked once, exactly, on the first query), the
-//! nearest triangle is proved unique (so the nearest point is inside that face and the segment
-//! to it crosses nothing), and the point's side of its plane is an exact `orient3d` sign. Every
-//! other point (near-ties between faces, points nearest to an edge or a vertex, meshes that fail
-//! the check) takes the exact ray test. Both routes give the same answer, exact either way; the
-//! first is only faster.
+//! The sign comes from the faces that may hold the nearest point when that is certain: the
+//! mesh is closed, consistently oriented and free of self-intersections (checked once, exactly,
+//! on the first query, [`SolidSides`]), the distance is certified tightly enough that every
+//! triangle outside a small candidate set is proved farther than the nearest point, and the
+//! point lies strictly on the outer side of every candidate's plane (then it is outside) or
+//! strictly on the inner side of every one (then inside), each an exact `orient3d` sign. Why
+//! that is exact: a nearest point `q` lies in a candidate, and so does every triangle through
+//! `q` (each is as near); the open segment from `p` to `q` crosses nothing, so `p` is inside
+//! exactly when the directions from `q` into the solid hold `p − q`; near `q` the solid is the
+//! polyhedral cone of the triangles through `q` (one face, the wedge of an edge, the fan of a
+//! vertex), and a direction strictly outside every face plane of such a cone is outside it
+//! (walking round from it in any plane through it, the first face met would have to be left
+//! against its outward normal), strictly inside every one inside it. This covers points nearest
+//! to a face, and to an edge or a vertex whose faces all see them on one side (a convex edge or
+//! vertex seen from outside, a reflex one from inside, all but the sharpest). Every other point
+//! (mixed sides, a point on a candidate's plane, meshes that fail the check) takes the exact ray
+//! test. Both routes give the same answer, exact either way; the first is only faster.
+//!
+//! Each work item of a batch reuses one set of search buffers for its points (no allocation
+//! per point).
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -89,6 +102,17 @@ pub(crate) struct Nearest {
 /// An examined triangle: `(proved lower bound on its distance, triangle, separation)`.
 type Examined = (f64, u32, Option<(f64, f64)>);
 
+/// The buffers of one nearest-triangle search, kept between the points of a batch.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    examined: Vec<Examined>,
+    open: Vec<(f64, u32)>,
+    heap: BinaryHeap<u128>,
+    /// After a search: the triangles that may hold the nearest point (every other one is
+    /// proved farther), or empty when the search could not prove that.
+    candidates: Vec<u32>,
+}
+
 impl Collider {
     /// The signed distance of `p` to this mesh: negative inside, `0` on the surface, with its
     /// certified error bound, the exact inside/outside, and the nearest point and triangle.
@@ -112,7 +136,7 @@ impl Collider {
     /// ```
     pub fn signed_distance(&self, p: &Point3<f64>) -> Result<PointDistance, Error> {
         self.check_points(std::slice::from_ref(p))?;
-        Ok(self.point_distance(p))
+        Ok(self.point_distance(p, &mut Scratch::default()))
     }
 
     /// [`signed_distance`](Self::signed_distance) of every point, spread over the cores (in the
@@ -124,7 +148,12 @@ impl Collider {
         let _ = self.pose_tree();
         Ok(points
             .par_chunks(CHUNK)
-            .flat_map_iter(|chunk| chunk.iter().map(|p| self.point_distance(p)))
+            .flat_map_iter(|chunk| {
+                let mut scratch = Scratch::default();
+                chunk
+                    .iter()
+                    .map(move |p| self.point_distance(p, &mut scratch))
+            })
             .collect())
     }
 
@@ -165,11 +194,11 @@ impl Collider {
     }
 
     /// The answer for one checked point.
-    fn point_distance(&self, point: &Point3<f64>) -> PointDistance {
+    fn point_distance(&self, point: &Point3<f64>, scratch: &mut Scratch) -> PointDistance {
         let p = [point.x, point.y, point.z];
         // A checked point and a non-empty mesh always give an answer; the fallback is for
         // completeness only (the exact ray test and no distance).
-        let Some(near) = self.nearest_certified(&p) else {
+        let Some(near) = self.nearest_certified(&p, scratch) else {
             return PointDistance {
                 signed_distance: f64::NAN,
                 error_bound: f64::INFINITY,
@@ -188,7 +217,7 @@ impl Collider {
             };
         }
         let inside = self
-            .side_from_nearest_face(&near, &p)
+            .side_from_candidates(&scratch.candidates, &p)
             .unwrap_or_else(|| self.contains_point(point));
         PointDistance {
             signed_distance: if inside {
@@ -203,25 +232,35 @@ impl Collider {
         }
     }
 
-    /// Inside or outside from the nearest face, when that is certain (see the module docs).
-    fn side_from_nearest_face(&self, near: &Nearest, p: &[f64; 3]) -> Option<bool> {
-        if !near.unique {
-            return None;
+    /// Inside (`true`) or outside from the faces that may hold the nearest point, when they all
+    /// agree (see the module docs); `None` when they do not, when one's side is unknown or the
+    /// point is on one's plane, or when there are none.
+    fn side_from_candidates(&self, candidates: &[u32], p: &[f64; 3]) -> Option<bool> {
+        let sides = self.sides();
+        let mut answer = None;
+        for &t in candidates {
+            let outward = sides.of(t);
+            if outward == 0 {
+                return None;
+            }
+            let [a, b, c] = self.corners(t);
+            let inside = match ExactKernel::orient3d(&a, &b, &c, p) {
+                Ordering::Greater => outward < 0,
+                Ordering::Less => outward > 0,
+                Ordering::Equal => return None,
+            };
+            if answer.is_some_and(|x| x != inside) {
+                return None;
+            }
+            answer = Some(inside);
         }
-        let outward = self.sides().of(near.triangle);
-        if outward == 0 {
-            return None;
-        }
-        let [a, b, c] = self.corners(near.triangle);
-        match ExactKernel::orient3d(&a, &b, &c, p) {
-            Ordering::Greater => Some(outward < 0),
-            Ordering::Less => Some(outward > 0),
-            Ordering::Equal => None,
-        }
+        answer
     }
 
     /// The nearest triangle of `p` (finite, within range), certified; `None` for an empty mesh.
-    pub(crate) fn nearest_certified(&self, p: &[f64; 3]) -> Option<Nearest> {
+    /// `scratch` holds the search's buffers and, after it, the candidate triangles.
+    pub(crate) fn nearest_certified(&self, p: &[f64; 3], scratch: &mut Scratch) -> Option<Nearest> {
+        scratch.candidates.clear();
         if self.mesh().num_triangles() == 0 {
             return None;
         }
@@ -236,10 +275,17 @@ impl Collider {
         let nodes = self.bvh().nodes();
         let tree = self.pose_tree();
         let at = Aabb { min: *p, max: *p };
-        let mut examined: Vec<Examined> = Vec::new();
+        let Scratch {
+            examined,
+            open,
+            heap,
+            candidates,
+        } = scratch;
+        examined.clear();
+        open.clear();
+        heap.clear();
         let mut best = (f64::INFINITY, u32::MAX, [0.0; 3]);
         let mut limit = f64::INFINITY;
-        let mut heap = BinaryHeap::new();
         let mut next = Some(queued(box_distance2(&at, &nodes[0].bounds), 0, 0));
         while let Some((lower, i, _)) = next.take().map(unqueued) {
             if lower > limit {
@@ -269,7 +315,7 @@ impl Collider {
             for child in [node.start, node.start + 1] {
                 let d = box_distance2(&at, &nodes[child as usize].bounds);
                 if d <= limit {
-                    enqueue(&mut next, &mut heap, queued(d, child, 0));
+                    enqueue(&mut next, heap, queued(d, child, 0));
                 }
             }
             if next.is_none() {
@@ -280,11 +326,12 @@ impl Collider {
         let distance = best2.sqrt();
         // Certification first with every examined triangle not proved farther than the best
         // `f64` distance (every other triangle is).
-        let open: Vec<(f64, u32)> = examined
-            .iter()
-            .filter(|&&(_, _, sep)| !sep.is_some_and(|s| separated_beyond(s, best2)))
-            .map(|&(lb, x, _)| (lb, x))
-            .collect();
+        open.extend(
+            examined
+                .iter()
+                .filter(|&&(_, _, sep)| !sep.is_some_and(|s| separated_beyond(s, best2)))
+                .map(|&(lb, x, _)| (lb, x)),
+        );
         let t = self.corners(triangle);
         let within = |x: u32, c: f64| triangle_point(&self.corners(x), p, &[c, 0.0, 0.0]);
         // The first bound tried is `4096u` times the scale (about `1e-12` relative), not the
@@ -304,14 +351,19 @@ impl Collider {
         } else {
             None
         };
-        // Unique: the triangles not examined are farther than `distance + margin`, above the
-        // certified upper end; every examined one but the winner is proved beyond that end.
+        // The triangles not examined are farther than `distance + margin`, above the certified
+        // upper end when the bound is small enough; of the examined ones, those not proved
+        // beyond that end are the candidates. Unique: the winner is the only one.
         let upper = (distance + error_bound) * (1.0 + 4.0 * U);
-        let unique = on_surface.is_none()
-            && error_bound <= 0.5 * margin(distance)
-            && examined
-                .iter()
-                .all(|&(lb, x, _)| x == triangle || lb > upper);
+        if on_surface.is_none() && error_bound <= 0.5 * margin(distance) {
+            candidates.extend(
+                examined
+                    .iter()
+                    .filter(|&&(lb, x, _)| x == triangle || lb <= upper)
+                    .map(|&(_, x, _)| x),
+            );
+        }
+        let unique = candidates.len() == 1;
         Some(Nearest {
             triangle,
             distance,
@@ -336,4 +388,55 @@ fn corners_box(t: &[[f64; 3]; 3]) -> Aabb {
 fn dist2(a: &[f64; 3], b: &[f64; 3]) -> f64 {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::TriMesh;
+
+    fn unit_cube() -> Collider {
+        Collider::new(TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap())
+    }
+
+    /// The faces that may hold the nearest point of `p`, and the sign they give.
+    fn sign(c: &Collider, p: [f64; 3]) -> (usize, Option<bool>) {
+        let mut scratch = Scratch::default();
+        c.nearest_certified(&p, &mut scratch).unwrap();
+        let n = scratch.candidates.len();
+        (n, c.side_from_candidates(&scratch.candidates, &p))
+    }
+
+    #[test]
+    fn points_nearest_to_edges_and_vertices_take_their_sign_from_the_faces() {
+        let c = unit_cube();
+        // Outside, nearest to an edge (two faces) and to a vertex (its fan): all see it outside.
+        let (n, s) = sign(&c, [1.5, 1.5, 0.5]);
+        assert!(n >= 2 && s == Some(false), "{n} {s:?}");
+        let (n, s) = sign(&c, [1.5, -0.25, 1.75]);
+        assert!(n >= 2 && s == Some(false), "{n} {s:?}");
+        let (n, s) = sign(&c, [-0.5, -0.5, -0.5]);
+        assert!(n >= 3 && s == Some(false), "{n} {s:?}");
+        // Inside, as near to two faces as to each other: both see it inside.
+        let (n, s) = sign(&c, [0.75, 0.75, 0.5]);
+        assert!(n >= 2 && s == Some(true), "{n} {s:?}");
+        // Nearest to one face.
+        assert_eq!(sign(&c, [0.5, 0.25, 1.125]), (1, Some(false)));
+        for p in [[1.5, 1.5, 0.5], [-0.5, -0.5, -0.5], [0.75, 0.75, 0.5]] {
+            let r = c.signed_distance(&Point3::from(p)).unwrap();
+            assert_eq!(r.inside, c.contains_point(&Point3::from(p)));
+        }
+    }
+
+    #[test]
+    fn a_point_on_a_candidate_plane_or_on_an_open_mesh_has_no_fast_sign() {
+        let c = unit_cube();
+        // On the plane of the face x = 1, beyond the edge: the exact ray test decides.
+        assert_eq!(sign(&c, [1.0, 1.5, 0.5]).1, None);
+        let cube = TriMesh::cuboid(Point3::origin(), Point3::new(1.0, 1.0, 1.0)).unwrap();
+        let mut tris = cube.triangles().to_vec();
+        tris.pop();
+        let open = Collider::new(TriMesh::new(cube.vertices().to_vec(), tris).unwrap());
+        assert_eq!(sign(&open, [0.5, 0.5, 1.5]).1, None);
+    }
 }

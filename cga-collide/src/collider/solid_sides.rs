@@ -20,6 +20,7 @@ use std::collections::HashMap;
 
 use nalgebra::Point3;
 
+use crate::collider::signed_distance::Scratch;
 use crate::collider::Collider;
 use crate::exact::{ExactKernel, Kernel};
 
@@ -128,7 +129,7 @@ fn probe(collider: &Collider, t: u32) -> Option<(u32, i8)> {
     let q: [f64; 3] = std::array::from_fn(|k| {
         (corners[0][k] + corners[1][k] + corners[2][k]) / 3.0 + n[k] * step
     });
-    let near = collider.nearest_certified(&q)?;
+    let near = collider.nearest_certified(&q, &mut Scratch::default())?;
     if !near.unique {
         return None;
     }
