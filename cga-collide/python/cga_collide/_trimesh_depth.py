@@ -31,9 +31,9 @@ from . import CgaError, Collider, ConvexHull, signed_distance_at
 
 __all__ = ["Depth", "MAX_HULL_POINTS", "pair_depth"]
 
-# The largest hull (distinct points) whose exact penetration depth the library computes
+# The largest hull (distinct points, so at most as many corners) whose exact penetration depth the library computes
 # (`cga_collide::query::MAX_HULL_POINTS`).
-MAX_HULL_POINTS = 32
+MAX_HULL_POINTS = 128
 
 
 class Depth:

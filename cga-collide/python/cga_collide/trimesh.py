@@ -14,7 +14,7 @@ Deliberate differences from trimesh's FCL-backed manager (see ``docs/python.md``
   (the mean of its corners); FCL picks a point of its own. ``depth`` and ``normal`` are the
   object pair's penetration depth and its direction (from the first object towards the
   second), the same for every contact of the pair: for two convex meshes (checked exactly,
-  at most 32 distinct vertices each) the exact penetration depth (the shortest separating
+  at most 128 distinct vertices each) the exact penetration depth (the shortest separating
   translation, proved to a few ulps); for other closed meshes the depth of the deepest
   vertex of one inside the other (a certified lower bound of the penetration depth); for open
   meshes, which bound no solid, ``0`` with the contact triangle's face normal.
