@@ -14,14 +14,28 @@
 //! `bench-products` times the same chain written product by product with `ga_core::cga`
 //! (`Even` rotors, one generated product per call): the baseline, and the reference's code.
 //!
-//! `bench ROUNDS` times ROUNDS batches of 1,024 chains with angles uniform in `[0, 2π)` and
-//! prints `{"op": "g_ik_ga_benchmark", "median_ns": …, "max_rel_error_vs_exact": …}`: the
-//! median over the batches of the time per chain, and the largest relative error of the
-//! gripper point (the 5 coefficients of `Jg_f` in `e1 … e5`; the max-norm of the error over the
-//! max-norm of the reference point) against the same chain evaluated in `Rational` arithmetic
-//! on the same angles (every `f64` is a dyadic rational, so the reference sees exactly the
-//! angles the `f64` chain sees; the arm's lengths are the exact decimals there). A chain whose
-//! `f64` result overflows counts as relative error 1; stderr gets the error distribution.
+//! `bench ROUNDS` times ROUNDS batches of 1,024 chains with angles uniform in `[0, 2π)` (ga-benchmark's
+//! `MakeRandomAngle`) and prints one JSON line:
+//! `{"op": "g_ik_ga_benchmark", "median_ns": …, "max_rel_error_vs_exact": …,
+//! "chains_beyond_f64": …, "worst_error_in_angle_ulps": …, "sanity_rel_error_vs_exact": …}`:
+//! - `median_ns`: the median over the batches of the time per chain;
+//! - `max_rel_error_vs_exact`: the largest relative error of the gripper point (the 5
+//!   coefficients of `Jg_f` in `e1 … e5`; the max-norm of the error over the max-norm of the
+//!   reference point, computed exactly) against the same chain evaluated in `Rational`
+//!   arithmetic on the same angles (every `f64` is a dyadic rational, so the reference sees
+//!   exactly the angles the `f64` chain sees; the arm's lengths are the exact decimals there),
+//!   over the first 256 chains whose exact gripper lies within `f64`'s range. A result that is
+//!   not finite while the exact one is counts as error 1;
+//! - `chains_beyond_f64`: how many of those 256 chains have an exact gripper beyond `f64`'s range
+//!   (the 4th-order series is not a unit rotor, so for angles near 2π each joint scales the
+//!   next line and the values grow without bound): no `f64` result can be right there;
+//! - `worst_error_in_angle_ulps`: the worst chain's error over how far its exact gripper moves
+//!   when one of its angles moves by one unit in the last place (the largest over the five): the
+//!   error in units of the chain's own conditioning, about 1 for an evaluation as good as
+//!   rounding its inputs;
+//! - `sanity_rel_error_vs_exact`: the same relative error for ga-benchmark's sanity angles.
+//!
+//! stderr gets the error distribution.
 //!
 //! Why the reference rounds: the chain is a polynomial of degree about 95,000 in the angles
 //! (each 4th-order series multiplies the degree of its argument by 4, and each rotor feeds the
@@ -412,45 +426,90 @@ fn gripper(which: Implementation, arm: &Arm<f64>, a: &[f64; 5]) -> [Option<Ratio
     }
 }
 
-fn bench(rounds: usize, which: Implementation) {
+/// The exact gripper of the chain for the `f64` angles `a` (each a dyadic rational).
+fn exact_gripper(exact_arm: &Arm<Precise>, a: &[f64; 5]) -> Vector<Precise> {
+    let exact_angles = a.map(|x| Precise(rational_from_f64(x).unwrap_or_else(Rational::zero)));
+    chain_by_products(exact_arm, &exact_angles).jg_f
+}
+
+/// How far the exact gripper moves, relatively, when one angle moves by one unit in the last
+/// place: the largest over the five angles. An `f64` evaluation rounds its intermediates by
+/// that much, so an error of a few times this is the chain's conditioning, not the code's.
+fn one_ulp_angle_effect(exact_arm: &Arm<Precise>, a: &[f64; 5], exact: &Vector<Precise>) -> f64 {
+    (0..5)
+        .map(|k| {
+            let mut moved = *a;
+            moved[k] = moved[k].next_up();
+            let moved = exact_gripper(exact_arm, &moved).coefficients();
+            relative_error(&moved.map(|c| Some(c.0)), exact)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The accuracy figures of `bench`: see the module documentation.
+struct Accuracy {
+    /// The largest relative error over the chains whose exact gripper fits `f64`.
+    max_error: f64,
+    /// Chains whose exact gripper lies beyond `f64`'s range (no `f64` result can be right).
+    beyond_f64: usize,
+    /// The worst chain's error over [`one_ulp_angle_effect`] of its angles.
+    worst_in_angle_ulps: f64,
+    /// The relative error of ga-benchmark's sanity chain.
+    sanity_error: f64,
+}
+
+fn accuracy(which: Implementation, first: &[[f64; 5]]) -> Accuracy {
     let arm = Arm::<f64>::new();
     let exact_arm = Arm::precise();
-    let mut angles = Angles(0x1C_C4A1);
-    let first = angles.batch();
-    let mut errors = Vec::with_capacity(EXACT_SAMPLES);
-    let mut overflowed = 0;
-    // Chains whose exact gripper lies beyond `f64`'s range (no `f64` result can be right), and
-    // the largest error over the others.
-    let mut out_of_range = 0;
-    let mut max_in_range = 0.0f64;
     let largest = Rational::from_float(f64::MAX).unwrap_or_else(Rational::zero);
+    let mut errors = Vec::with_capacity(EXACT_SAMPLES);
+    let mut beyond_f64 = 0;
+    let mut worst: Option<([f64; 5], Vector<Precise>)> = None;
+    let mut max_error = 0.0f64;
     for a in first.iter().take(EXACT_SAMPLES) {
-        let approx = gripper(which, &arm, a);
-        overflowed += usize::from(approx.iter().any(Option::is_none));
-        let exact_angles = a.map(|x| Precise(rational_from_f64(x).unwrap_or_else(Rational::zero)));
-        let exact = chain_by_products(&exact_arm, &exact_angles).jg_f;
-        let error = relative_error(&approx, &exact);
+        let exact = exact_gripper(&exact_arm, a);
         if exact.coefficients().iter().any(|c| c.0.abs() > largest) {
-            out_of_range += 1;
-        } else {
-            max_in_range = max_in_range.max(error);
+            beyond_f64 += 1;
+            continue;
+        }
+        let error = relative_error(&gripper(which, &arm, a), &exact);
+        if error > max_error || worst.is_none() {
+            max_error = error;
+            worst = Some((*a, exact));
         }
         errors.push(error);
     }
     errors.sort_by(f64::total_cmp);
-    let max_error = errors.last().copied().unwrap_or(0.0);
-    // The 4th-order series is far from the exponential for angles near 2π: there the chain's
-    // values reach 1e60 and beyond (or overflow `f64`). The JSON keeps the maximum, as
-    // specified; the distribution goes to stderr.
-    eprintln!(
-        "ik_chain: relative error of the gripper over {} chains: median {:.2e}, 90% {:.2e}, \
-         max {:.2e}; {overflowed} chains not finite in f64, {out_of_range} whose exact result \
-         exceeds f64's range; max over the others {max_in_range:.2e}",
-        errors.len(),
-        errors[errors.len() / 2],
-        errors[errors.len() * 9 / 10],
+    let worst_in_angle_ulps = worst.map_or(0.0, |(a, exact)| {
+        max_error / one_ulp_angle_effect(&exact_arm, &a, &exact)
+    });
+    let sanity_error = sanity_relative_error(which);
+    if let (Some(median), Some(p90)) = (
+        errors.get(errors.len() / 2),
+        errors.get(errors.len() * 9 / 10),
+    ) {
+        eprintln!(
+            "ik_chain: relative error of the gripper over the {} of {} chains whose exact result \
+             fits f64: median {median:.2e}, 90% {p90:.2e}, max {max_error:.2e} \
+             ({worst_in_angle_ulps:.2} times the effect of one ulp of an angle on the exact \
+             result); {beyond_f64} chains exact beyond f64; sanity chain {sanity_error:.2e}",
+            errors.len(),
+            errors.len() + beyond_f64,
+        );
+    }
+    Accuracy {
         max_error,
-    );
+        beyond_f64,
+        worst_in_angle_ulps,
+        sanity_error,
+    }
+}
+
+fn bench(rounds: usize, which: Implementation) {
+    let arm = Arm::<f64>::new();
+    let mut angles = Angles(0x1C_C4A1);
+    let first = angles.batch();
+    let acc = accuracy(which, &first);
     let mut per_chain = Vec::with_capacity(rounds);
     let mut batch = first;
     for round in 0..rounds.max(1) {
@@ -489,13 +548,31 @@ fn bench(rounds: usize, which: Implementation) {
     };
     println!(
         "{{\"op\": \"{op}\", \"median_ns\": {median:.1}, \
-         \"max_rel_error_vs_exact\": {max_error:.3e}}}"
+         \"max_rel_error_vs_exact\": {:.3e}, \"chains_beyond_f64\": {}, \
+         \"worst_error_in_angle_ulps\": {:.2}, \"sanity_rel_error_vs_exact\": {:.3e}}}",
+        acc.max_error, acc.beyond_f64, acc.worst_in_angle_ulps, acc.sanity_error
     );
 }
 
 /// ga-benchmark's sanity angles (14°, -25°, 32.6°, 66.9°, -42°).
 fn sanity_angles() -> [f64; 5] {
     [14.0, -25.0, 32.6, 66.9, -42.0f64].map(f64::to_radians)
+}
+
+/// The relative error of the gripper of ga-benchmark's sanity chain against the exact chain.
+fn sanity_relative_error(which: Implementation) -> f64 {
+    let sanity = sanity_angles();
+    relative_error(
+        &gripper(which, &Arm::new(), &sanity),
+        &exact_gripper(&Arm::precise(), &sanity),
+    )
+}
+
+/// The generated chain's gripper for ga-benchmark's sanity angles is within 1e-16 of the exact
+/// chain's, relative to the point's size (Versor is quoted within 4e-17).
+pub fn check_sanity_accuracy() {
+    let error = sanity_relative_error(Implementation::Fused);
+    assert!(error <= 1e-16, "sanity chain relative error {error:e}");
 }
 
 /// ga-benchmark's sanity chain, product by product.

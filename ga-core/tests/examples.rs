@@ -23,3 +23,8 @@ fn symbolic_derivation_runs() {
 fn ik_chain_matches_ga_benchmarks_sanity_values() {
     ik_chain::check_sanity();
 }
+
+#[test]
+fn ik_chain_sanity_gripper_is_within_1e16_of_exact() {
+    ik_chain::check_sanity_accuracy();
+}

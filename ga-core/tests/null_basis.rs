@@ -126,6 +126,30 @@ pair_test!(even_odd, Even, Odd);
 pair_test!(quadvector_pseudoscalar, Quadvector, Pseudoscalar);
 pair_test!(dense_dense, Multivector, Multivector);
 
+// Every grade pair of ga-benchmark's conformal binary operations (grades 1 to 5).
+pair_test!(grades_vector_bivector, Vector, Bivector);
+pair_test!(grades_vector_trivector, Vector, Trivector);
+pair_test!(grades_vector_quadvector, Vector, Quadvector);
+pair_test!(grades_vector_pseudoscalar, Vector, Pseudoscalar);
+pair_test!(grades_bivector_vector, Bivector, Vector);
+pair_test!(grades_bivector_bivector, Bivector, Bivector);
+pair_test!(grades_bivector_quadvector, Bivector, Quadvector);
+pair_test!(grades_bivector_pseudoscalar, Bivector, Pseudoscalar);
+pair_test!(grades_trivector_vector, Trivector, Vector);
+pair_test!(grades_trivector_bivector, Trivector, Bivector);
+pair_test!(grades_trivector_trivector, Trivector, Trivector);
+pair_test!(grades_trivector_quadvector, Trivector, Quadvector);
+pair_test!(grades_trivector_pseudoscalar, Trivector, Pseudoscalar);
+pair_test!(grades_quadvector_vector, Quadvector, Vector);
+pair_test!(grades_quadvector_bivector, Quadvector, Bivector);
+pair_test!(grades_quadvector_trivector, Quadvector, Trivector);
+pair_test!(grades_quadvector_quadvector, Quadvector, Quadvector);
+pair_test!(grades_pseudoscalar_vector, Pseudoscalar, Vector);
+pair_test!(grades_pseudoscalar_bivector, Pseudoscalar, Bivector);
+pair_test!(grades_pseudoscalar_trivector, Pseudoscalar, Trivector);
+pair_test!(grades_pseudoscalar_quadvector, Pseudoscalar, Quadvector);
+pair_test!(grades_pseudoscalar_pseudoscalar, Pseudoscalar, Pseudoscalar);
+
 macro_rules! unary_test {
     ($name:ident, $a:ident) => {
         proptest! {
