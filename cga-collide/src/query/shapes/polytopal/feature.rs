@@ -213,16 +213,29 @@ impl Polys<2> for Gap<'_> {
 }
 
 /// The point of `core` least along the direction (greatest when `largest`), exactly.
+///
+/// A first pass bounds every point's `d·x` with the error-bounded direction and takes the
+/// point with the best proved bound; a point whose bound is strictly worse than that one's
+/// cannot be the extreme, so only the points whose bounds overlap it (ties, flush faces) are
+/// compared exactly.
 fn extreme(core: &Core, simplex: &Simplex, flip: bool, largest: bool) -> ExactPoint {
-    let d = simplex.direction(flip, &ErrF64::exact).map(|x| x.value);
-    let along = |i: usize| {
-        let p = core.approx(i);
-        d[0] * p[0] + d[1] * p[1] + d[2] * p[2]
+    let d = simplex.direction(flip, &ErrF64::exact);
+    // Bounds of `±d·x` (negated for the least point), so that the extreme is the greatest.
+    let bounds = |i: usize| {
+        let p = core.point(i).lift(&ErrF64::exact);
+        let v = dot(&p, &d);
+        let v = if largest { v } else { -v };
+        (
+            (v.value - v.error).next_down(),
+            (v.value + v.error).next_up(),
+        )
     };
     let mut best = 0;
-    for i in 1..core.len() {
-        if (along(i) > along(best)) == largest && along(i) != along(best) {
-            best = i;
+    let mut best_low = f64::NEG_INFINITY;
+    for i in 0..core.len() {
+        let (low, _) = bounds(i);
+        if low > best_low {
+            (best, best_low) = (i, low);
         }
     }
     let mut point = core.point(best);
@@ -232,7 +245,8 @@ fn extreme(core: &Core, simplex: &Simplex, flip: bool, largest: bool) -> ExactPo
         Ordering::Less
     };
     for i in 0..core.len() {
-        if i == best {
+        // NaN bounds (overflow) fall through to the exact comparison.
+        if i == best || bounds(i).1 < best_low {
             continue;
         }
         let x = core.point(i);
