@@ -41,6 +41,9 @@ impl ExactPoint {
     }
 }
 
+// The corners stay inline: a `Core` lives on the stack for one query, and boxing them would
+// allocate on every call.
+#[allow(clippy::large_enum_variant)]
 enum Points<'a> {
     /// Up to three points given inline (ball centre, capsule axis, triangle, segment).
     Few { points: [P3; 3], len: usize },
