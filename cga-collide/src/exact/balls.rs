@@ -46,6 +46,15 @@ pub(crate) fn balls_meet(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool
 /// [`balls_meet`] without the `f64` filter: the conformal [`BallBall`] predicate through the
 /// crate's [`ExactKernel`].
 fn balls_meet_exact(c1: &[f64; 3], r1: f64, c2: &[f64; 3], r2: f64) -> bool {
+    // `(r1 + r2)² − |c2 − c1|²` on expansions first (no allocation); the kernel decides what
+    // they cannot hold.
+    let e = super::Expansion::from_f64;
+    let d: [super::Expansion; 3] = core::array::from_fn(|k| e(c2[k]) - e(c1[k]));
+    let s = e(r1) + e(r2);
+    let room = s * s - (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if let Some(sign) = room.sign() {
+        return sign != Ordering::Less;
+    }
     ExactKernel::sign::<BallBall, 8>(&[c1[0], c1[1], c1[2], r1, c2[0], c2[1], c2[2], r2])
         != Ordering::Less
 }

@@ -45,6 +45,25 @@ fn reach(s: &[f64; 3]) -> ErrF64 {
 
 /// Proved bounds `(low, high)` of `min n·x` (or of `max n·x` when `largest`) over the core.
 fn extreme_dot(core: &Core, n: &E3, largest: bool) -> (f64, f64) {
+    if let Some((centre, axes)) = core.parallelepiped() {
+        // Over `c + Σ s_k U_k`, `|s_k| ≤ 1`: `n·c ± Σ |n·U_k|`, each `|n·U_k|` bounded as
+        // `n·U_k` is (the absolute value moves a value at most as far as it moves).
+        let mut spread = ErrF64::zero();
+        for axis in axes {
+            let d = dot(&axis.map(exact), n);
+            spread = spread
+                + ErrF64 {
+                    value: d.value.abs(),
+                    error: d.error,
+                };
+        }
+        let c = dot(&centre.map(exact), n);
+        let d = if largest { c + spread } else { c - spread };
+        return (
+            (d.value - d.error).next_down(),
+            (d.value + d.error).next_up(),
+        );
+    }
     let mut bounds = (f64::INFINITY, f64::INFINITY);
     if largest {
         bounds = (f64::NEG_INFINITY, f64::NEG_INFINITY);
@@ -93,7 +112,7 @@ pub(super) fn apart(a: &Core, b: &Core, v: &P3, s: &[f64; 3]) -> bool {
 pub(super) fn close(a: &Core, b: &Core, found: &Found, s: &[f64; 3]) -> bool {
     let mut total = ErrF64::zero();
     let mut gap: E3 = [ErrF64::zero(); 3];
-    for (&(ia, ib), &w) in found.pairs.iter().zip(&found.weights) {
+    for (&(ia, ib), &w) in found.pairs().iter().zip(found.weights()) {
         if w < 0.0 || !w.is_finite() {
             return false;
         }
@@ -121,11 +140,11 @@ fn orient(p: [&E3; 4]) -> ErrF64 {
 /// Proves that the search's last tetrahedron of difference points holds the origin, or
 /// returns false.
 pub(super) fn inside(a: &Core, b: &Core, found: &Found) -> bool {
-    if found.pairs.len() != 4 {
+    if found.pairs().len() != 4 {
         return false;
     }
     let w: Vec<E3> = found
-        .pairs
+        .pairs()
         .iter()
         .map(|&(ia, ib)| sub(&lifted(a, ia), &lifted(b, ib)))
         .collect();

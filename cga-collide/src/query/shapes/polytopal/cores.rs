@@ -41,13 +41,21 @@ impl ExactPoint {
     }
 }
 
+// The corners stay inline: a `Core` lives on the stack for one query, and boxing them would
+// allocate on every call.
+#[allow(clippy::large_enum_variant)]
 enum Points<'a> {
     /// Up to three points given inline (ball centre, capsule axis, triangle, segment).
     Few { points: [P3; 3], len: usize },
     /// A hull's extreme points.
     Hull(&'a ConvexHull),
-    /// A parallelepiped's eight corners: corner `i` takes `+axis k` when bit `k` of `i` is set.
-    Box { centre: P3, axes: [P3; 3] },
+    /// A parallelepiped's eight corners: corner `i` takes `+axis k` when bit `k` of `i` is set
+    /// (`corners`: each rounded once to `f64`, for the search).
+    Box {
+        centre: P3,
+        axes: [P3; 3],
+        corners: [P3; 8],
+    },
 }
 
 /// A shape as core ⊕ ball(radius).
@@ -55,6 +63,8 @@ pub(super) struct Core<'a> {
     points: Points<'a>,
     /// The radius of the ball the core is grown by.
     pub(super) radius: f64,
+    /// The largest magnitude of a coordinate, term or the radius (computed once).
+    magnitude: f64,
 }
 
 fn p3(p: &Point3<f64>) -> P3 {
@@ -76,9 +86,10 @@ impl<'a> Core<'a> {
                     len: pts.len(),
                 },
                 radius,
+                magnitude: 0.0,
             }
         };
-        Some(match shape {
+        let mut core = match shape {
             Shape::Ball(b) => few(&[b.centre()], b.radius()),
             Shape::Capsule(c) => few(&[c.a(), c.b()], c.radius()),
             Shape::Segment(s) => few(&[s.a(), s.b()], 0.0),
@@ -86,19 +97,48 @@ impl<'a> Core<'a> {
                 let [a, b, c] = t.vertices();
                 few(&[a, b, c], 0.0)
             }
-            Shape::Cuboid(c) => Core {
-                points: Points::Box {
-                    centre: p3(c.centre()),
-                    axes: c.half_axes().map(|h| [h.x, h.y, h.z]),
-                },
-                radius: 0.0,
-            },
+            Shape::Cuboid(c) => {
+                let centre = p3(c.centre());
+                let axes = c.half_axes().map(|h| [h.x, h.y, h.z]);
+                let corners = core::array::from_fn(|i| {
+                    core::array::from_fn(|k| {
+                        let term = |j: usize| {
+                            if i >> j & 1 == 1 {
+                                axes[j][k]
+                            } else {
+                                -axes[j][k]
+                            }
+                        };
+                        centre[k] + term(0) + term(1) + term(2)
+                    })
+                });
+                Core {
+                    points: Points::Box {
+                        centre,
+                        axes,
+                        corners,
+                    },
+                    radius: 0.0,
+                    magnitude: 0.0,
+                }
+            }
             Shape::ConvexHull(h) => Core {
                 points: Points::Hull(h),
                 radius: 0.0,
+                magnitude: 0.0,
             },
             Shape::HalfSpace(_) | Shape::Cylinder(_) | Shape::Cone(_) => return None,
-        })
+        };
+        core.magnitude = core.compute_magnitude();
+        Some(core)
+    }
+
+    /// The centre and half axes when the core is a parallelepiped.
+    pub(super) fn parallelepiped(&self) -> Option<(&P3, &[P3; 3])> {
+        match &self.points {
+            Points::Box { centre, axes, .. } => Some((centre, axes)),
+            _ => None,
+        }
     }
 
     /// How many points span the core.
@@ -115,7 +155,7 @@ impl<'a> Core<'a> {
         match &self.points {
             Points::Few { points, .. } => ExactPoint::single(points[i]),
             Points::Hull(h) => ExactPoint::single(p3(&h.extreme_points()[i])),
-            Points::Box { centre, axes } => {
+            Points::Box { centre, axes, .. } => {
                 let mut terms = [*centre; 4];
                 for (k, axis) in axes.iter().enumerate() {
                     terms[k + 1] = if i >> k & 1 == 1 {
@@ -134,12 +174,7 @@ impl<'a> Core<'a> {
         match &self.points {
             Points::Few { points, .. } => points[i],
             Points::Hull(h) => p3(&h.extreme_points()[i]),
-            Points::Box { .. } => {
-                let e = self.point(i);
-                core::array::from_fn(|k| {
-                    e.terms[0][k] + e.terms[1][k] + e.terms[2][k] + e.terms[3][k]
-                })
-            }
+            Points::Box { corners, .. } => corners[i],
         }
     }
 
@@ -157,18 +192,24 @@ impl<'a> Core<'a> {
         }
     }
 
-    /// The largest magnitude of a coordinate or the radius (a scale for error bounds).
+    /// The largest magnitude of a coordinate, a term of one or the radius (a scale for error
+    /// bounds).
     pub(super) fn magnitude(&self) -> f64 {
-        let mut m = self.radius;
-        for i in 0..self.len() {
-            let e = self.point(i);
-            for t in &e.terms[..e.len] {
-                for x in t {
-                    m = m.max(x.abs());
-                }
+        self.magnitude
+    }
+
+    fn compute_magnitude(&self) -> f64 {
+        let largest = |m: f64, p: &P3| p.iter().fold(m, |m, x| m.max(x.abs()));
+        match &self.points {
+            Points::Few { points, len } => points[..*len].iter().fold(self.radius, largest),
+            Points::Hull(h) => h
+                .extreme_points()
+                .iter()
+                .fold(self.radius, |m, p| largest(m, &p3(p))),
+            Points::Box { centre, axes, .. } => {
+                axes.iter().fold(largest(self.radius, centre), largest)
             }
         }
-        m
     }
 }
 

@@ -29,7 +29,7 @@ use ga_core::scalar::Ring;
 
 use super::cores::{Core, ExactPoint};
 use super::staged::{signs, Polys};
-use crate::exact::ErrF64;
+use crate::exact::{ErrF64, Expansion};
 
 type V<R> = [R; 3];
 
@@ -56,10 +56,15 @@ struct Simplex {
 }
 
 impl Simplex {
-    fn points<R: Ring>(&self, lift: &dyn Fn(f64) -> R) -> Vec<V<R>> {
-        (0..self.len)
-            .map(|k| sub(&self.a[k].lift(lift), &self.b[k].lift(lift)))
-            .collect()
+    /// The difference points (the first `len`; the rest zero), in fixed storage.
+    fn points<R: Ring>(&self, lift: &dyn Fn(f64) -> R) -> [V<R>; 4] {
+        from_fn(|k| {
+            if k < self.len {
+                sub(&self.a[k].lift(lift), &self.b[k].lift(lift))
+            } else {
+                from_fn(|_| R::zero())
+            }
+        })
     }
 
     fn reach<R: Ring>(&self, lift: &dyn Fn(f64) -> R) -> R {
@@ -69,7 +74,7 @@ impl Simplex {
     /// The direction `d` of the module docs (`flip` negates a face normal).
     fn direction<R: Ring>(&self, flip: bool, lift: &dyn Fn(f64) -> R) -> V<R> {
         let p = self.points(lift);
-        match p.len() {
+        match self.len {
             1 => p[0].clone(),
             2 => {
                 let e = sub(&p[1], &p[0]);
@@ -212,17 +217,116 @@ impl Polys<2> for Gap<'_> {
     }
 }
 
+/// A sub-simplex's apart direction `d`, error-bounded, and exactly on expansions once an
+/// exact sign is needed (`None` inside when they cannot hold it), so that the comparisons of
+/// [`extreme`] and the gap of [`apart`] compute it once.
+struct Direction<'a> {
+    simplex: &'a Simplex,
+    flip: bool,
+    bounded: V<ErrF64>,
+    exact: Option<Option<V<Expansion>>>,
+}
+
+impl<'a> Direction<'a> {
+    fn new(simplex: &'a Simplex, flip: bool) -> Self {
+        Direction {
+            simplex,
+            flip,
+            bounded: simplex.direction(flip, &ErrF64::exact),
+            exact: None,
+        }
+    }
+
+    fn exact(&mut self) -> Option<&V<Expansion>> {
+        let (simplex, flip) = (self.simplex, self.flip);
+        self.exact
+            .get_or_insert_with(|| {
+                let d = simplex.direction(flip, &Expansion::from_f64);
+                (!d.iter().any(Expansion::is_poisoned)).then_some(d)
+            })
+            .as_ref()
+    }
+
+    /// The exact sign of `d·x − d·y`.
+    fn compare(&mut self, x: &ExactPoint, y: &ExactPoint) -> Ordering {
+        let bounded = dot(
+            &self.bounded,
+            &sub(&x.lift(&ErrF64::exact), &y.lift(&ErrF64::exact)),
+        );
+        if let Some(s) = bounded.sign() {
+            return s;
+        }
+        if let Some(d) = self.exact() {
+            let diff = sub(&x.lift(&Expansion::from_f64), &y.lift(&Expansion::from_f64));
+            if let Some(s) = dot(d, &diff).sign() {
+                return s;
+            }
+        }
+        let [s] = signs(&Compare {
+            simplex: self.simplex,
+            flip: self.flip,
+            x: *x,
+            y: *y,
+        });
+        s
+    }
+
+    /// The exact signs of `[G, G² − S² d·d]`, `G = d·a − d·b`.
+    fn gap(&mut self, a: &ExactPoint, b: &ExactPoint) -> [Ordering; 2] {
+        fn eval<R: Ring>(d: &V<R>, a: &V<R>, b: &V<R>, s: R) -> [R; 2] {
+            let g = dot(d, &sub(a, b));
+            [g.clone(), g.clone() * g - s.clone() * s * dot(d, d)]
+        }
+        let simplex = self.simplex;
+        let bounded = eval(
+            &self.bounded,
+            &a.lift(&ErrF64::exact),
+            &b.lift(&ErrF64::exact),
+            simplex.reach(&ErrF64::exact),
+        );
+        if let [Some(g), Some(f)] = bounded.map(|x| x.sign()) {
+            return [g, f];
+        }
+        if let Some(d) = self.exact() {
+            let e = &Expansion::from_f64;
+            let exact = eval(d, &a.lift(e), &b.lift(e), simplex.reach(e));
+            if let [Some(g), Some(f)] = exact.map(|x| x.sign()) {
+                return [g, f];
+            }
+        }
+        signs(&Gap {
+            simplex,
+            flip: self.flip,
+            a: *a,
+            b: *b,
+        })
+    }
+}
+
 /// The point of `core` least along the direction (greatest when `largest`), exactly.
-fn extreme(core: &Core, simplex: &Simplex, flip: bool, largest: bool) -> ExactPoint {
-    let d = simplex.direction(flip, &ErrF64::exact).map(|x| x.value);
-    let along = |i: usize| {
-        let p = core.approx(i);
-        d[0] * p[0] + d[1] * p[1] + d[2] * p[2]
+///
+/// A first pass bounds every point's `d·x` with the error-bounded direction and takes the
+/// point with the best proved bound; a point whose bound is strictly worse than that one's
+/// cannot be the extreme, so only the points whose bounds overlap it (ties, flush faces) are
+/// compared exactly.
+fn extreme(core: &Core, direction: &mut Direction, largest: bool) -> ExactPoint {
+    let d = direction.bounded;
+    // Bounds of `±d·x` (negated for the least point), so that the extreme is the greatest.
+    let bounds = |i: usize| {
+        let p = core.point(i).lift(&ErrF64::exact);
+        let v = dot(&p, &d);
+        let v = if largest { v } else { -v };
+        (
+            (v.value - v.error).next_down(),
+            (v.value + v.error).next_up(),
+        )
     };
     let mut best = 0;
-    for i in 1..core.len() {
-        if (along(i) > along(best)) == largest && along(i) != along(best) {
-            best = i;
+    let mut best_low = f64::NEG_INFINITY;
+    for i in 0..core.len() {
+        let (low, _) = bounds(i);
+        if low > best_low {
+            (best, best_low) = (i, low);
         }
     }
     let mut point = core.point(best);
@@ -232,17 +336,12 @@ fn extreme(core: &Core, simplex: &Simplex, flip: bool, largest: bool) -> ExactPo
         Ordering::Less
     };
     for i in 0..core.len() {
-        if i == best {
+        // NaN bounds (overflow) fall through to the exact comparison.
+        if i == best || bounds(i).1 < best_low {
             continue;
         }
         let x = core.point(i);
-        let [s] = signs(&Compare {
-            simplex,
-            flip,
-            x,
-            y: point,
-        });
-        if s == beyond {
+        if direction.compare(&x, &point) == beyond {
             point = x;
         }
     }
@@ -250,17 +349,10 @@ fn extreme(core: &Core, simplex: &Simplex, flip: bool, largest: bool) -> ExactPo
 }
 
 fn apart(a: &Core, b: &Core, simplex: &Simplex, flip: bool) -> bool {
-    let (low_a, high_b) = (
-        extreme(a, simplex, flip, false),
-        extreme(b, simplex, flip, true),
-    );
-    let s = signs(&Gap {
-        simplex,
-        flip,
-        a: low_a,
-        b: high_b,
-    });
-    s == [Ordering::Greater; 2]
+    let mut direction = Direction::new(simplex, flip);
+    let low_a = extreme(a, &mut direction, false);
+    let high_b = extreme(b, &mut direction, true);
+    direction.gap(&low_a, &high_b) == [Ordering::Greater; 2]
 }
 
 /// What one sub-simplex proves alone.

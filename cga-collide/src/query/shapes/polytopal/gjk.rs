@@ -10,27 +10,40 @@
 use ga_core::scalar::{rational_from_f64, Rational, Ring};
 
 use super::cores::{Core, P3};
-use super::simplex::{nearest_to_origin, Nearest};
+use super::float_simplex::nearest_to_origin;
+use super::simplex;
 
 /// What the `f64` search found: the last simplex as pairs of core point indices, its
 /// barycentric weights and the nearest point `v` (of the difference A − B, scaled by `scale`).
+#[derive(Clone, Copy, Debug)]
 pub(super) struct Found {
-    pub(super) pairs: Vec<(usize, usize)>,
-    pub(super) weights: Vec<f64>,
+    pairs: [(usize, usize); 4],
+    weights: [f64; 4],
+    len: usize,
     pub(super) v: P3,
-    /// The power of two the search's coordinates were multiplied by (keeps its Gram
-    /// determinants inside the `f64` range at every scale).
+    /// The power of two the search's coordinates were multiplied by (keeps the products
+    /// inside the `f64` range at every scale).
     pub(super) scale: f64,
 }
 
 impl Found {
+    /// The pairs of the last simplex.
+    pub(super) fn pairs(&self) -> &[(usize, usize)] {
+        &self.pairs[..self.len]
+    }
+
+    /// The weights of the pairs.
+    pub(super) fn weights(&self) -> &[f64] {
+        &self.weights[..self.len]
+    }
+
     /// The nearest points of A and of B in `f64` (unscaled).
     pub(super) fn witnesses(&self, a: &Core, b: &Core) -> (P3, P3) {
-        let total: f64 = self.weights.iter().sum();
+        let total: f64 = self.weights().iter().sum();
         let total = if total > 0.0 { total } else { 1.0 };
         let mut x = [0.0; 3];
         let mut y = [0.0; 3];
-        for (&(ia, ib), w) in self.pairs.iter().zip(&self.weights) {
+        for (&(ia, ib), w) in self.pairs().iter().zip(self.weights()) {
             let (pa, pb) = (a.approx(ia), b.approx(ib));
             for k in 0..3 {
                 x[k] += w / total * pa[k];
@@ -52,54 +65,59 @@ pub(super) fn unit_scale(magnitude: f64) -> f64 {
     2f64.powi((-e).clamp(-1022, 1022))
 }
 
-fn float_dependent(det: &f64, diag: &f64) -> bool {
-    *det <= 1e-20 * *diag || !det.is_finite()
-}
-
 fn exact_dependent(det: &Rational, _: &Rational) -> bool {
     Ring::is_zero(det)
 }
 
-/// The `f64` search.
+/// The `f64` search: fixed-size arrays, each difference point computed once.
 pub(super) fn search(a: &Core, b: &Core) -> Found {
     let scale = unit_scale(a.magnitude().max(b.magnitude()));
     let point = |(ia, ib): (usize, usize)| -> P3 {
         let (pa, pb) = (a.approx(ia), b.approx(ib));
         core::array::from_fn(|k| pa[k] * scale - pb[k] * scale)
     };
-    let mut pairs = vec![(0, 0)];
+    let mut pairs = [(0, 0); 4];
+    let mut pts = [point((0, 0)); 4];
+    let mut len = 1;
     let mut found = Found {
-        pairs: pairs.clone(),
-        weights: vec![1.0],
-        v: point((0, 0)),
+        pairs,
+        weights: [1.0, 0.0, 0.0, 0.0],
+        len,
+        v: pts[0],
         scale,
     };
     let mut last = f64::INFINITY;
     for _ in 0..MAX_STEPS {
-        let pts: Vec<P3> = pairs.iter().map(|&p| point(p)).collect();
-        let near: Nearest<f64> = nearest_to_origin(&pts, &float_dependent);
-        if near.norm2.partial_cmp(&last) != Some(std::cmp::Ordering::Less)
-            || !near.norm2.is_finite()
-        {
+        let near = nearest_to_origin(&pts[..len]);
+        // Stop unless strictly nearer (NaN stops too).
+        if near.norm2.partial_cmp(&last) != Some(std::cmp::Ordering::Less) {
             break;
         }
         last = near.norm2;
-        let kept: Vec<usize> = (0..pairs.len())
-            .filter(|i| near.used >> i & 1 == 1)
-            .collect();
-        pairs = kept.iter().map(|&i| pairs[i]).collect();
+        let mut weights = [0.0; 4];
+        let mut kept = 0;
+        for i in 0..len {
+            if near.used >> i & 1 == 1 {
+                pairs[kept] = pairs[i];
+                pts[kept] = pts[i];
+                weights[kept] = near.weights[i].max(0.0);
+                kept += 1;
+            }
+        }
+        len = kept;
         found = Found {
-            pairs: pairs.clone(),
-            weights: kept.iter().map(|&i| near.weights[i].max(0.0)).collect(),
+            pairs,
+            weights,
+            len,
             v: near.point,
             scale,
         };
-        if near.norm2 == 0.0 || pairs.len() == 4 {
+        if near.norm2 == 0.0 || len == 4 {
             break;
         }
         let v = near.point;
         let next = (a.support(&v.map(|x| -x)), b.support(&v));
-        if pairs.contains(&next) {
+        if pairs[..len].contains(&next) {
             break;
         }
         let w = point(next);
@@ -107,7 +125,9 @@ pub(super) fn search(a: &Core, b: &Core) -> Found {
         if gap <= 1e-14 * near.norm2 {
             break;
         }
-        pairs.push(next);
+        pairs[len] = next;
+        pts[len] = w;
+        len += 1;
     }
     found
 }
@@ -149,7 +169,7 @@ pub(super) fn exact_distance2(a: &Core, b: &Core, start: &[(usize, usize)]) -> R
     let mut best = <Rational as Ring>::zero();
     for _ in 0..steps {
         let pts: Vec<[Rational; 3]> = pairs.iter().map(|&p| point(p)).collect();
-        let near = nearest_to_origin(&pts, &exact_dependent);
+        let near = simplex::nearest_to_origin(&pts, &exact_dependent);
         best = near.norm2.clone();
         if Ring::is_zero(&near.norm2) {
             break;

@@ -13,6 +13,7 @@ use ga_core::scalar::Ring;
 
 use super::cores::{Core, ExactPoint, P3};
 use super::staged::{exact, filtered, signs, Polys};
+use crate::exact::ErrF64;
 use crate::query::distance::certify;
 use crate::query::CertifiedDistance;
 use crate::shape::HalfSpace;
@@ -62,9 +63,45 @@ fn near_enough(signs: [Ordering; 2]) -> bool {
     signs[0] != Ordering::Greater || signs[1] != Ordering::Greater
 }
 
+/// A parallelepiped's answer from its lowest corner in closed form, when the error-bounded
+/// signs are certain: the least `h` over `centre + Σ s_j U_j`, `|s_j| ≤ 1`, is
+/// `(centre − p)·n − Σ |U_j·n|`, and some corner has `h ≤ 0` or `h² ≤ (r + c)²·n·n` exactly when
+/// the lowest one has (the others' `h` are larger, so are their squares when it is positive).
+fn parallelepiped_side(
+    centre: &P3,
+    axes: &[P3; 3],
+    p: &P3,
+    n: &P3,
+    r: f64,
+    c: f64,
+) -> Option<bool> {
+    let e = ErrF64::exact;
+    let dot = |v: &P3| (0..3).fold(ErrF64::zero(), |acc, k| acc + e(v[k]) * e(n[k]));
+    let mut low = (0..3).fold(ErrF64::zero(), |acc, k| {
+        acc + (e(centre[k]) - e(p[k])) * e(n[k])
+    });
+    for axis in axes {
+        let d = dot(axis);
+        // `|x|` is as far from `|exact|` as `x` is from `exact`.
+        low = low
+            - ErrF64 {
+                value: d.value.abs(),
+                error: d.error,
+            };
+    }
+    let s = e(r) + e(c);
+    let far = low * low - s * s * dot(n);
+    Some(near_enough([low.sign()?, far.sign()?]))
+}
+
 /// Exact: is the grown core within `c` of the half-space?
 pub(super) fn within_core(h: &HalfSpace, core: &Core, c: f64) -> bool {
     let (p, n) = (p3(h.point()), scaled_normal(h));
+    if let Some((centre, axes)) = core.parallelepiped() {
+        if let Some(answer) = parallelepiped_side(centre, axes, &p, &n, core.radius, c) {
+            return answer;
+        }
+    }
     let mut undecided = Vec::new();
     for i in 0..core.len() {
         let v = core.point(i);

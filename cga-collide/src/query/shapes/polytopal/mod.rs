@@ -20,6 +20,7 @@
 mod certificate;
 mod cores;
 mod feature;
+mod float_simplex;
 mod gjk;
 mod half_space;
 mod simplex;
@@ -147,10 +148,10 @@ fn cores_within(a: &Core, b: &Core, c: f64) -> bool {
     if !far && certificate::apart(a, b, &found.v, &s) {
         return false;
     }
-    if let Some(answer) = feature::decide(a, b, &found.pairs, s) {
+    if let Some(answer) = feature::decide(a, b, found.pairs(), s) {
         return answer;
     }
-    let d2 = gjk::exact_distance2(a, b, &found.pairs);
+    let d2 = gjk::exact_distance2(a, b, found.pairs());
     let reach = q(s[0]) + q(s[1]) + q(s[2]);
     d2 <= &reach * &reach
 }
@@ -197,5 +198,5 @@ pub(crate) fn exact_core_distance2(a: &Shape, b: &Shape) -> Option<(Rational, [f
     let (a, b) = (Core::of(a)?, Core::of(b)?);
     let found = gjk::search(&a, &b);
     let (x, y) = found.witnesses(&a, &b);
-    Some((gjk::exact_distance2(&a, &b, &found.pairs), x, y))
+    Some((gjk::exact_distance2(&a, &b, found.pairs()), x, y))
 }

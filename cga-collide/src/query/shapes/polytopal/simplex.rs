@@ -11,10 +11,9 @@
 
 use ga_core::scalar::Real;
 
-/// The result: weights over the input points (zero for the points not used), the subset used
-/// (bit `i` for point `i`), the nearest point and its squared norm.
+/// The result: the subset used (bit `i` for point `i`), the nearest point and its squared
+/// norm.
 pub(super) struct Nearest<R> {
-    pub(super) weights: [R; 4],
     pub(super) used: u8,
     pub(super) point: [R; 3],
     pub(super) norm2: R,
@@ -124,18 +123,12 @@ pub(super) fn nearest_to_origin<R: Real>(
         };
         let norm2 = dot(&point, &point);
         if best.as_ref().is_none_or(|b| norm2 < b.norm2) {
-            best = Some(Nearest {
-                weights,
-                used,
-                point,
-                norm2,
-            });
+            best = Some(Nearest { used, point, norm2 });
         }
     }
     // A single point always projects onto itself, so `best` is set; the fallback keeps the
     // function total.
     best.unwrap_or_else(|| Nearest {
-        weights: core::array::from_fn(|i| if i == 0 { R::one() } else { zero.clone() }),
         used: 1,
         point: points
             .first()

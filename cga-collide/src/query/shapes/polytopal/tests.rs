@@ -554,7 +554,7 @@ fn the_feature_stage_decides_constructed_contacts() {
     for (b, c, expected) in pairs {
         let (ca, cb) = (Core::of(&a).unwrap(), Core::of(&b).unwrap());
         let found = super::gjk::search(&ca, &cb);
-        let answer = feature::decide(&ca, &cb, &found.pairs, [ca.radius, cb.radius, c]);
+        let answer = feature::decide(&ca, &cb, found.pairs(), [ca.radius, cb.radius, c]);
         assert_eq!(answer, Some(expected), "{b:?} at clearance {c}");
         assert_eq!(within_distance(&a, &b, c), expected);
     }
@@ -578,7 +578,7 @@ proptest! {
         let truth = rational_within(&ca, &cb, c);
         let reach = [ca.radius, cb.radius, c];
         let found = super::gjk::search(&ca, &cb);
-        if let Some(answer) = feature::decide(&ca, &cb, &found.pairs, reach) {
+        if let Some(answer) = feature::decide(&ca, &cb, found.pairs(), reach) {
             prop_assert_eq!(answer, truth, "{:?} {:?} {}", a, b, c);
         }
         let mut pairs: Vec<(usize, usize)> =
