@@ -237,9 +237,57 @@ fn swapped(d: CertifiedDistance) -> CertifiedDistance {
     }
 }
 
+/// A capsule holding a cylinder or a cone (the same axis points and radius): its exact tests
+/// are much cheaper than theirs, and when it is apart, so are they.
+fn enclosing_capsule(s: &Shape) -> Option<Shape> {
+    let capsule = match s {
+        Shape::Cylinder(c) => Capsule::new(*c.a(), *c.b(), c.radius()),
+        Shape::Cone(c) => Capsule::new(*c.apex(), *c.base(), c.radius()),
+        _ => return None,
+    };
+    capsule.ok().map(Shape::from)
+}
+
 impl PairTest<'_> {
+    /// `Some(false)` when the pair, with its cylinders and cones grown to their enclosing
+    /// capsules, is proved not to pass `test` (so the pair itself does not); `None` when
+    /// there is nothing to grow or the grown pair may pass.
+    fn grown_apart(
+        &self,
+        test: impl Fn(&PairTest) -> Result<bool, Error>,
+    ) -> Result<Option<bool>, Error> {
+        let ((ga, pa), (gb, pb)) = (self.a, self.b);
+        let grow = |p: &Placed| p.shape.as_ref().and_then(enclosing_capsule);
+        let (ca, cb) = (grow(pa), grow(pb));
+        if ca.is_none() && cb.is_none() {
+            return Ok(None);
+        }
+        let with = |p: &Placed, c: Option<Shape>| Placed {
+            shape: c.or_else(|| p.shape.clone()),
+            ..p.clone()
+        };
+        let (wa, wb) = (with(pa, ca), with(pb, cb));
+        let grown = PairTest {
+            a: (ga, &wa),
+            b: (gb, &wb),
+            solid: self.solid,
+        };
+        // A pair the grown shapes cannot answer is left to the exact test of the pair itself.
+        Ok(match test(&grown) {
+            Ok(false) => Some(false),
+            _ => None,
+        })
+    }
+
     /// Do they touch (surfaces of meshes, or solids when `solid`; primitives are solids)?
     pub fn touches(&self) -> Result<bool, Error> {
+        if let Some(answer) = self.grown_apart(|t| t.touches_exactly())? {
+            return Ok(answer);
+        }
+        self.touches_exactly()
+    }
+
+    fn touches_exactly(&self) -> Result<bool, Error> {
         let ((ga, pa), (gb, pb)) = (self.a, self.b);
         match (ga, gb, &pa.shape, &pb.shape) {
             (Geometry::Mesh(a), Geometry::Mesh(b), _, _) => {
@@ -269,6 +317,13 @@ impl PairTest<'_> {
 
     /// Are they within distance `c` (exact, closed)?
     pub fn within(&self, c: f64) -> Result<bool, Error> {
+        if let Some(answer) = self.grown_apart(|t| t.within_exactly(c))? {
+            return Ok(answer);
+        }
+        self.within_exactly(c)
+    }
+
+    fn within_exactly(&self, c: f64) -> Result<bool, Error> {
         let ((ga, pa), (gb, pb)) = (self.a, self.b);
         match (ga, gb, &pa.shape, &pb.shape) {
             (Geometry::Mesh(a), Geometry::Mesh(b), _, _) => {

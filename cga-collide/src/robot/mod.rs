@@ -77,6 +77,8 @@ mod geometry;
 mod kinematics;
 mod obb;
 mod queries;
+mod spheres;
+mod staged;
 mod urdf;
 
 #[cfg(test)]
@@ -94,6 +96,7 @@ use crate::error::Error;
 use crate::scene::{ObjectId, Scene};
 use geometry::{place, Geometry, Loader, Part, Placed};
 use kinematics::Joint;
+use spheres::Sphere;
 use urdf::{model_error, parse_srdf, parse_urdf};
 
 /// An environment object the robot is asked against: its scene handle and its placed body.
@@ -102,6 +105,7 @@ struct EnvObject {
     id: ObjectId,
     geometry: Geometry,
     placed: Placed,
+    sphere: Sphere,
 }
 
 /// A robot read from a URDF, its allowed link pairs and an optional environment (see the
@@ -112,6 +116,10 @@ pub struct Robot {
     /// Every part, grouped by link in link order; `link_parts[l]` is link `l`'s range.
     parts: Vec<Part>,
     link_parts: Vec<std::ops::Range<usize>>,
+    /// Each part's bounding sphere in its link's frame.
+    part_spheres: Vec<Sphere>,
+    /// Each link's bounding sphere around its parts', in its frame (`None`: no geometry).
+    link_spheres: Vec<Option<Sphere>>,
     /// Joints parents first (a joint's parent link is placed before it).
     joints: Vec<Joint>,
     /// The movable joints' names, in configuration order.
@@ -187,6 +195,14 @@ impl Robot {
             }
             link_parts.push(start..parts.len());
         }
+        let part_spheres: Vec<Sphere> = parts
+            .iter()
+            .map(|p| Sphere::of_part(&p.geometry, &p.local))
+            .collect();
+        let link_spheres = link_parts
+            .iter()
+            .map(|r| Sphere::around(&part_spheres[r.clone()]))
+            .collect();
         let has_geometry = |l: usize| !link_parts[l].is_empty();
         let mut pairs = Vec::new();
         for a in 0..spec.links.len() {
@@ -202,6 +218,8 @@ impl Robot {
             link_names: spec.links.iter().map(|l| l.name.clone()).collect(),
             parts,
             link_parts,
+            part_spheres,
+            link_spheres,
             joint_names: tree.joint_names,
             joint_limits: tree.joint_limits,
             joints: tree.joints,
@@ -265,6 +283,7 @@ impl Robot {
             env.push(EnvObject {
                 id,
                 geometry,
+                sphere: Sphere::of_box(&placed.bbox),
                 placed,
             });
         }

@@ -2,12 +2,13 @@
 //! each tested pair of links (or link and environment object) set aside by its world boxes or
 //! decided by the exact test of its parts.
 
-use crate::bounding::Aabb;
 use crate::error::Error;
 use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
 
 use super::geometry::{box_gap_lower, boxes_within, place, Geometry, PairTest, Placed};
+use super::spheres::Sphere;
+use super::staged::Staged;
 use super::Robot;
 
 /// What the robot is asked against.
@@ -40,13 +41,15 @@ enum Other {
     Env(usize),
 }
 
-/// Every part placed at one configuration, with each link's box.
+/// Every part placed at one configuration (the view of checks that need them all; the
+/// questions here place parts on demand, [`Staged`]).
+#[cfg_attr(not(test), allow(dead_code))]
 pub(super) struct Posed {
     pub(super) parts: Vec<Placed>,
-    link_boxes: Vec<Aabb>,
 }
 
 impl Robot {
+    #[cfg_attr(not(test), allow(dead_code))]
     pub(super) fn pose_parts(&self, q: &[f64]) -> Result<Posed, Error> {
         let links = self.link_poses(q)?;
         let parts = self
@@ -54,37 +57,33 @@ impl Robot {
             .iter()
             .map(|p| place(&p.geometry, links[p.link] * p.local))
             .collect::<Result<Vec<_>, Error>>()?;
-        let link_boxes = self
-            .link_parts
-            .iter()
-            .map(|r| {
-                parts[r.clone()]
-                    .iter()
-                    .fold(Aabb::EMPTY, |b, p| b.union(&p.bbox))
-            })
-            .collect();
-        Ok(Posed { parts, link_boxes })
+        Ok(Posed { parts })
     }
 
-    /// The tested pairs, self pairs first, then link × environment object.
-    fn units(&self, against: Against) -> Vec<(usize, Other)> {
-        let mut out = Vec::new();
-        if against != Against::Environment {
-            out.extend(self.pairs.iter().map(|&(a, b)| (a, Other::Link(b))));
-        }
-        if against != Against::Itself {
-            for (l, r) in self.link_parts.iter().enumerate() {
-                if !r.is_empty() {
-                    out.extend((0..self.environment.len()).map(|e| (l, Other::Env(e))));
-                }
-            }
-        }
-        out
+    /// The tested pairs, self pairs first, then link × environment object (no allocation).
+    fn units(&self, against: Against) -> impl Iterator<Item = (usize, Other)> + '_ {
+        let own = (against != Against::Environment)
+            .then(|| self.pairs.iter().map(|&(a, b)| (a, Other::Link(b))))
+            .into_iter()
+            .flatten();
+        let env = (against != Against::Itself)
+            .then(|| {
+                self.link_parts
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, r)| !r.is_empty())
+                    .flat_map(move |(l, _)| {
+                        (0..self.environment.len()).map(move |e| (l, Other::Env(e)))
+                    })
+            })
+            .into_iter()
+            .flatten();
+        own.chain(env)
     }
 
     /// How many pairs (of links, or of a link and an environment object) a question tests.
     pub fn pairs_checked(&self, against: Against) -> usize {
-        self.units(against).len()
+        self.units(against).count()
     }
 
     fn name(&self, o: Other) -> String {
@@ -94,30 +93,60 @@ impl Robot {
         }
     }
 
-    /// The other member's parts: `(geometry, placed)` pairs.
-    fn members<'a>(&'a self, posed: &'a Posed, o: Other) -> Vec<(&'a Geometry, &'a Placed)> {
+    /// How many parts the other member has.
+    fn member_count(&self, o: Other) -> usize {
         match o {
-            Other::Link(l) => self.link_parts[l]
-                .clone()
-                .map(|k| (&self.parts[k].geometry, &posed.parts[k]))
-                .collect(),
+            Other::Link(l) => self.link_parts[l].len(),
+            Other::Env(_) => 1,
+        }
+    }
+
+    /// The other member's `i`-th part, `(geometry, placed)` (its link placed already).
+    fn member<'a>(&'a self, st: &'a Staged, o: Other, i: usize) -> (&'a Geometry, &'a Placed) {
+        match o {
+            Other::Link(l) => {
+                let k = self.link_parts[l].start + i;
+                (&self.parts[k].geometry, st.part(k))
+            }
             Other::Env(e) => {
                 let obj = &self.environment[e];
-                vec![(&obj.geometry, &obj.placed)]
+                (&obj.geometry, &obj.placed)
             }
         }
     }
 
-    fn other_box(&self, posed: &Posed, o: Other) -> Aabb {
+    /// The other member's `i`-th part's world sphere.
+    fn member_sphere(&self, st: &Staged, o: Other, i: usize) -> Sphere {
         match o {
-            Other::Link(l) => posed.link_boxes[l],
-            Other::Env(e) => self.environment[e].placed.bbox,
+            Other::Link(l) => st.part_sphere(self.link_parts[l].start + i),
+            Other::Env(e) => self.environment[e].sphere,
         }
     }
 
+    /// Places both members' parts unless their spheres are proved farther apart than
+    /// `reach`; `false` when they are.
+    fn stage_pair(&self, st: &mut Staged, a: usize, o: Other, reach: f64) -> Result<bool, Error> {
+        let theirs = match o {
+            Other::Link(b) => st.link_spheres[b],
+            Other::Env(e) => Some(self.environment[e].sphere),
+        };
+        match (st.link_spheres[a], theirs) {
+            (Some(sa), Some(sb)) if !sa.apart(&sb, reach) => {}
+            _ => return Ok(false),
+        }
+        st.place_link(a)?;
+        if let Other::Link(b) = o {
+            st.place_link(b)?;
+        }
+        let other_box = match o {
+            Other::Link(b) => st.link_box(b),
+            Other::Env(e) => &self.environment[e].placed.bbox,
+        };
+        Ok(boxes_within(st.link_box(a), other_box, reach))
+    }
+
     /// The tested pairs for which some part pair is not proved farther apart than `reach` by
-    /// its boxes and passes `decide` (exact);
-    /// stops after the first when `first`.
+    /// its spheres and boxes and passes `decide` (exact); stops after the first when `first`.
     fn scan(
         &self,
         q: &[f64],
@@ -126,17 +155,21 @@ impl Robot {
         reach: f64,
         decide: impl Fn(&PairTest) -> Result<bool, Error>,
     ) -> Result<Vec<(String, String)>, Error> {
-        let posed = self.pose_parts(q)?;
+        let mut st = Staged::new(self, q)?;
         let mut out = Vec::new();
         for (a, o) in self.units(against) {
-            if !boxes_within(&posed.link_boxes[a], &self.other_box(&posed, o), reach) {
+            if !self.stage_pair(&mut st, a, o, reach)? {
                 continue;
             }
-            let others = self.members(&posed, o);
             let mut hit = false;
             'parts: for k in self.link_parts[a].clone() {
-                let mine = (&self.parts[k].geometry, &posed.parts[k]);
-                for &theirs in &others {
+                let mine = (&self.parts[k].geometry, st.part(k));
+                let sphere = st.part_sphere(k);
+                for i in 0..self.member_count(o) {
+                    if sphere.apart(&self.member_sphere(&st, o, i), reach) {
+                        continue;
+                    }
+                    let theirs = self.member(&st, o, i);
                     if mine.1.apart(theirs.1, reach) {
                         continue;
                     }
@@ -196,34 +229,56 @@ impl Robot {
     /// part pair the primitives cannot yet measure (a cylinder against most shapes) is
     /// [`Error::UnsupportedPair`] when it has to be examined.
     pub fn nearest(&self, q: &[f64], against: Against) -> Result<Option<NearestPair>, Error> {
-        let posed = self.pose_parts(q)?;
-        let mut best: Option<(usize, Other, CertifiedDistance)> = None;
-        // The least lower end `distance - error_bound` over every examined part pair.
-        let mut lowest = f64::INFINITY;
+        let mut st = Staged::new(self, q)?;
+        // Every part pair with a lower bound on its distance from the spheres (no placing),
+        // examined nearest first: the search stops at the first bound at or past the best.
+        let mut candidates = Vec::new();
         for (a, o) in self.units(against) {
-            let others = self.members(&posed, o);
             for k in self.link_parts[a].clone() {
-                let mine = (&self.parts[k].geometry, &posed.parts[k]);
-                for &theirs in &others {
-                    let bound = best.as_ref().map_or(f64::INFINITY, |b| b.2.distance);
-                    if box_gap_lower(&mine.1.bbox, &theirs.1.bbox) >= bound {
-                        continue;
-                    }
-                    let d = PairTest {
-                        a: mine,
-                        b: theirs,
-                        solid: self.solid,
-                    }
-                    .distance()?;
-                    lowest = lowest.min(d.distance - d.error_bound);
-                    if d.distance < bound {
-                        best = Some((a, o, d));
-                    }
+                let sphere = st.part_sphere(k);
+                for i in 0..self.member_count(o) {
+                    let gap = sphere.gap_lower(&self.member_sphere(&st, o, i));
+                    candidates.push((gap, a, o, k, i));
                 }
             }
         }
+        candidates.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut best: Option<(usize, Other, CertifiedDistance)> = None;
+        // The least lower end `distance - error_bound` over every examined part pair.
+        let mut lowest = f64::INFINITY;
+        for (gap, a, o, k, i) in candidates {
+            let bound = best.as_ref().map_or(f64::INFINITY, |b| b.2.distance);
+            if gap >= bound {
+                break;
+            }
+            st.place_link(a)?;
+            if let Other::Link(b) = o {
+                st.place_link(b)?;
+            }
+            let mine = (&self.parts[k].geometry, st.part(k));
+            let theirs = self.member(&st, o, i);
+            if box_gap_lower(&mine.1.bbox, &theirs.1.bbox) >= bound {
+                continue;
+            }
+            let test = PairTest {
+                a: mine,
+                b: theirs,
+                solid: self.solid,
+            };
+            // Once a best is known, the exact clearance test sets aside a pair farther than it
+            // for much less than its distance costs.
+            if bound.is_finite() && !test.within(bound)? {
+                continue;
+            }
+            let d = test.distance()?;
+            lowest = lowest.min(d.distance - d.error_bound);
+            if d.distance < bound {
+                best = Some((a, o, d));
+            }
+        }
         Ok(best.map(|(a, o, mut d)| {
-            // Skipped pairs are at least the best distance away; examined ones at least
+            // Skipped pairs (by a bound, or not within the best distance by the exact
+            // clearance test) are at least the best distance away; examined ones at least
             // `lowest`: the bound covers both.
             d.error_bound = d.error_bound.max(d.distance - lowest);
             let (na, nb) = (self.link_names[a].clone(), self.name(o));
