@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use cga_collide::robot::{Against, Robot};
+use cga_collide::robot::{Against, MotionAnswer, MotionOptions, Robot};
 use clap::Args;
 use serde_json::{json, Value};
 
@@ -36,6 +36,11 @@ pub struct RobotArgs {
     /// Meshes are solids (a part inside a closed mesh touches it) instead of surfaces.
     #[arg(long)]
     solid: bool,
+    /// Also check the straight joint-space motion from each configuration to the next
+    /// (certified free, or a colliding configuration with its time; never a contact missed
+    /// between samples): adds `"motions"`, one answer per consecutive pair.
+    #[arg(long)]
+    motions: bool,
     /// Print the result as JSON.
     #[arg(long)]
     json: bool,
@@ -136,14 +141,22 @@ pub fn run(args: RobotArgs) -> Result<()> {
                 .collect()
         })
         .collect();
+    let motions = if args.motions {
+        Some(check_motions(&robot, &qs, against)?)
+    } else {
+        None
+    };
     if args.json {
-        let value = json!({
+        let mut value = json!({
             "configs": qs.len(),
             "pairs_checked": robot.pairs_checked(against),
             "colliding": lists,
             "micros_per_config": micros,
             "micros_per_config_first_hit": micros_first,
         });
+        if let Some(motions) = &motions {
+            value["motions"] = motions.iter().map(motion_json).collect();
+        }
         println!("{value}");
     } else {
         let hit = colliding.iter().filter(|c| !c.is_empty()).count();
@@ -160,6 +173,61 @@ pub fn run(args: RobotArgs) -> Result<()> {
             "{micros:.2} µs per configuration (all pairs, one thread), {micros_first:.2} µs to \
              the first hit"
         );
+        for (k, m) in motions.iter().flatten().enumerate() {
+            let what = match m {
+                MotionAnswer::Free => "free".to_string(),
+                MotionAnswer::Collides { time, pairs, .. } => {
+                    let names: Vec<String> =
+                        pairs.iter().map(|(a, b)| format!("{a}-{b}")).collect();
+                    format!("collides at t = {time}: {}", names.join(", "))
+                }
+                MotionAnswer::Undecided { free_until, .. } => {
+                    format!("undecided (certified free up to t = {free_until})")
+                }
+            };
+            println!("  motion {k} -> {}: {what}", k + 1);
+        }
     }
     Ok(())
+}
+
+/// The straight motion from each configuration to the next, over the cores.
+fn check_motions(robot: &Robot, qs: &[Vec<f64>], against: Against) -> Result<Vec<MotionAnswer>> {
+    let pairs: Vec<(&[f64], &[f64])> = qs
+        .windows(2)
+        .map(|w| (w[0].as_slice(), w[1].as_slice()))
+        .collect();
+    let options = MotionOptions {
+        against,
+        ..MotionOptions::default()
+    };
+    robot
+        .motion_collision_batch(&pairs, &options)
+        .context("motions")
+}
+
+/// `{"status", "time", "pairs", "free_until"}`: `time` and `pairs` of the colliding
+/// configuration (`null` and `[]` otherwise), `free_until` the time up to which the motion is
+/// certified free (1 when free).
+fn motion_json(m: &MotionAnswer) -> Value {
+    match m {
+        MotionAnswer::Free => {
+            json!({"status": "free", "time": null, "pairs": [], "free_until": 1.0})
+        }
+        MotionAnswer::Collides {
+            time,
+            pairs,
+            free_until,
+            ..
+        } => {
+            let pairs: Vec<[&str; 2]> = pairs
+                .iter()
+                .map(|(a, b)| [a.as_str(), b.as_str()])
+                .collect();
+            json!({"status": "collides", "time": time, "pairs": pairs, "free_until": free_until})
+        }
+        MotionAnswer::Undecided { free_until, .. } => {
+            json!({"status": "undecided", "time": null, "pairs": [], "free_until": free_until})
+        }
+    }
 }

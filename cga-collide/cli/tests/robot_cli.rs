@@ -112,3 +112,23 @@ fn errors_name_the_file_and_element() {
     let m = error(&run(&args));
     assert!(m.contains("\"wrist\"") && m.contains("shoulder_pan"), "{m}");
 }
+
+#[test]
+fn motions_between_consecutive_configurations() {
+    let v = json(&run(&robot_args(&["--motions"])));
+    let m = v["motions"].as_array().unwrap();
+    assert_eq!(m.len(), 2);
+    // From straight up to the shoulder lifted past the horizontal: the forearm meets the base
+    // on the way, no later than the end, which collides.
+    assert_eq!(m[0]["status"], "collides");
+    let t = m[0]["time"].as_f64().unwrap();
+    assert!(t > 0.0 && t <= 1.0, "time {t}");
+    assert!(m[0]["free_until"].as_f64().unwrap() <= t);
+    assert!(!m[0]["pairs"].as_array().unwrap().is_empty());
+    // The second motion starts in collision: time 0, the first configuration's pairs.
+    assert_eq!(m[1]["status"], "collides");
+    assert_eq!(m[1]["time"], 0.0);
+    assert_eq!(m[1]["pairs"], v["colliding"][1]);
+    // Without the flag the layout is the (no "motions").
+    assert!(json(&run(&robot_args(&[]))).get("motions").is_none());
+}

@@ -475,6 +475,49 @@ class Robot:
         """
     def nearest_batch(self, qs: ArrayLike, against: _Against = "self") -> List[Optional[Tuple[Tuple[str, str], Distance]]]:
         """``nearest`` for each row of a ``(k, dof)`` array."""
+    def motion_collision(self, q0: ArrayLike, q1: ArrayLike, against: _Against = "self", resolution: float = 1e-06, max_configurations: int = 100000) -> RobotMotion:
+        """The straight motion from ``q0`` to ``q1`` (``(dof,)`` arrays): certified free, the
+        earliest colliding configuration found, or undecided when ``resolution`` (the shortest
+        stretch split, a fraction of the motion) or ``max_configurations`` runs out first: a
+        ``RobotMotion``. Never misses a contact between samples.
+        """
+    def motion_collision_batch(self, q0s: ArrayLike, q1s: ArrayLike, against: _Against = "self", resolution: float = 1e-06, max_configurations: int = 100000) -> List[RobotMotion]:
+        """``motion_collision`` for each row pair of two ``(k, dof)`` arrays, over the cores."""
+    def __repr__(self) -> str: ...
+
+@final
+class RobotMotion:
+    """The answer about the straight motion ``q(t) = (1 - t) q0 + t q1``, ``t`` in ``[0, 1]``:
+    ``status`` is ``"free"`` (certified for every configuration of the motion, not only
+    samples), ``"collides"`` (``configuration`` at ``time`` collides, exactly, with every
+    touching pair in ``pairs``; the motion is certified free up to ``free_until``, so the first
+    contact lies in ``[free_until, time]``) or ``"undecided"`` (``limit``, ``"resolution"`` or
+    ``"configurations"``, ran out first; certified free up to ``free_until``).
+    """
+
+    @property
+    def status(self) -> Literal["free", "collides", "undecided"]:
+        """``"free"``, ``"collides"`` or ``"undecided"``."""
+    @property
+    def is_free(self) -> bool:
+        """Whether the motion is certified free."""
+    @property
+    def time(self) -> Optional[float]:
+        """The time of the colliding configuration, or ``None``."""
+    @property
+    def configuration(self) -> Optional[_Float64Array]:
+        """The colliding configuration, a ``(dof,)`` float64 array, or ``None``."""
+    @property
+    def pairs(self) -> List[Tuple[str, str]]:
+        """Every touching pair at the colliding configuration (sorted), else ``[]``."""
+    @property
+    def free_until(self) -> float:
+        """The motion is certified free on ``[0, free_until]`` (``1.0`` when free)."""
+    @property
+    def limit(self) -> Optional[Literal["resolution", "configurations"]]:
+        """Which budget left the motion undecided (``"resolution"`` or ``"configurations"``), or
+        ``None``.
+        """
     def __repr__(self) -> str: ...
 
 MAX_MAGNITUDE: float
@@ -758,6 +801,7 @@ __all__ = [
     "PointDistances",
     "ROTATION_TOLERANCE",
     "Robot",
+    "RobotMotion",
     "Scene",
     "Segment",
     "Shape",

@@ -13,6 +13,7 @@ mod distance;
 mod motion;
 mod points;
 mod robot;
+mod robot_motion;
 mod scene;
 mod shape_queries;
 mod shapes;
@@ -45,6 +46,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::ObjectId>()?;
     m.add_class::<robot::Robot>()?;
+    m.add_class::<robot_motion::RobotMotion>()?;
     motion::register(m)?;
     shapes::register(m)?;
     shape_queries::register(m)?;

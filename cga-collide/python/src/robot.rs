@@ -10,6 +10,7 @@ use pyo3::prelude::*;
 
 use crate::convert::{self, err, value_error, Arg, Bools};
 use crate::distance::Distance;
+use crate::robot_motion::{self, RobotMotion};
 use crate::scene::Scene;
 
 type Pair = (String, String);
@@ -221,6 +222,55 @@ impl Robot {
         let r = &self.inner;
         let out = py.detach(|| r.nearest_batch(&qs, w)).map_err(err)?;
         Ok(out.into_iter().map(nearest_pair).collect())
+    }
+
+    /// The straight motion from ``q0`` to ``q1`` (``(dof,)`` arrays): certified free, the
+    /// earliest colliding configuration found, or undecided when ``resolution`` (the shortest
+    /// stretch split, a fraction of the motion) or ``max_configurations`` runs out first: a
+    /// ``RobotMotion``. Never misses a contact between samples.
+    #[pyo3(signature = (q0, q1, against = "self", resolution = 1e-6, max_configurations = 100_000))]
+    fn motion_collision(
+        &self, py: Python<'_>, q0: &Arg, q1: &Arg, against: &str, resolution: f64,
+        max_configurations: i64,
+    ) -> PyResult<RobotMotion> {
+        let dof = self.inner.dof();
+        let q0 =
+            convert::read(q0, "q0", &[Some(dof)], |v| Ok(v.iter().copied().collect::<Vec<f64>>()))?;
+        let q1 =
+            convert::read(q1, "q1", &[Some(dof)], |v| Ok(v.iter().copied().collect::<Vec<f64>>()))?;
+        let o = robot_motion::options(self::against(against)?, resolution, max_configurations)?;
+        let r = &self.inner;
+        let answer = py.detach(|| r.motion_collision(&q0, &q1, &o)).map_err(err)?;
+        Ok(answer.into())
+    }
+
+    /// ``motion_collision`` for each row pair of two ``(k, dof)`` arrays, over the cores.
+    #[pyo3(signature = (q0s, q1s, against = "self", resolution = 1e-6, max_configurations = 100_000))]
+    fn motion_collision_batch(
+        &self, py: Python<'_>, q0s: &Arg, q1s: &Arg, against: &str, resolution: f64,
+        max_configurations: i64,
+    ) -> PyResult<Vec<RobotMotion>> {
+        let dof = self.inner.dof();
+        let rows = |a: &Arg, name: &str| {
+            convert::read(a, name, &[None, Some(dof)], |v| {
+                Ok(v.outer_iter()
+                    .map(|row| row.iter().copied().collect::<Vec<f64>>())
+                    .collect::<Vec<_>>())
+            })
+        };
+        let (q0s, q1s) = (rows(q0s, "q0s")?, rows(q1s, "q1s")?);
+        if q0s.len() != q1s.len() {
+            return Err(value_error(format!(
+                "q0s and q1s: expected as many rows, got {} and {}",
+                q0s.len(),
+                q1s.len()
+            )));
+        }
+        let motions: Vec<(Vec<f64>, Vec<f64>)> = q0s.into_iter().zip(q1s).collect();
+        let o = robot_motion::options(self::against(against)?, resolution, max_configurations)?;
+        let r = &self.inner;
+        let out = py.detach(|| r.motion_collision_batch(&motions, &o)).map_err(err)?;
+        Ok(out.into_iter().map(RobotMotion::from).collect())
     }
 
     fn __repr__(&self) -> String {

@@ -50,8 +50,24 @@
 //! oriented boxes (a mesh's own box in its pose) on the 15 separating axes, with margins far
 //! above their rounding; the batches spread configurations over the cores.
 //!
+//! # Motion
+//! [`Robot::motion_collision`] checks the straight motion `q(t) = (1 - t) q0 + t q1`,
+//! `t` in `[0, 1]`, between two configurations ([`Robot::motion_collision_batch`] for many):
+//! [`MotionAnswer::Free`] is certified for every configuration of the motion, not only for
+//! samples; [`MotionAnswer::Collides`] gives a configuration that collides (the exact test),
+//! its time and how far before it the motion is certified free; [`MotionAnswer::Undecided`]
+//! says that a budget of [`MotionOptions`] ran out first and how far the motion is certified
+//! free. The motion is split in halves, earliest first; on each stretch every link gets a
+//! bound on how far its points move from where they are at the stretch's middle (the sum,
+//! over the movable joints above it, of the joint's change times the most its points can be
+//! from the joint's axis point, whatever the joints between do, or the change itself for a
+//! prismatic joint), and a pair whose parts are farther apart than the two bounds (the
+//! exact, closed clearance test; cylinders and cones grown to capsules) cannot touch on the
+//! stretch. Touching means what it means for the configuration questions (meshes are
+//! surfaces unless [`Robot::set_solid`]).
+//!
 //! ```
-//! use cga_collide::robot::{Against, Robot};
+//! use cga_collide::robot::{Against, MotionAnswer, MotionOptions, Robot};
 //! let urdf = r#"<robot name="arm">
 //!   <link name="base"><collision><geometry><box size="1 1 0.2"/></geometry></collision></link>
 //!   <link name="upper"><collision><origin xyz="0 0 0.6"/><geometry><cylinder radius="0.1" length="0.8"/></geometry></collision></link>
@@ -70,11 +86,16 @@
 //! assert_eq!(robot.colliding_pairs(&folded, Against::Itself)?, [("base".to_string(), "fore".to_string())]);
 //! let nearest = robot.nearest(&[0.0, 0.0], Against::Itself)?.expect("one pair");
 //! assert!((nearest.distance.distance - 0.85).abs() <= 1e-9 + nearest.distance.error_bound);
+//! // The straight motion there meets the base on the way: the answer says when.
+//! let motion = robot.motion_collision(&[0.0, 0.0], &folded, &MotionOptions::default())?;
+//! assert!(matches!(motion, MotionAnswer::Collides { time, .. } if time > 0.0 && time <= 1.0));
 //! # Ok::<(), cga_collide::Error>(())
 //! ```
 
 mod geometry;
 mod kinematics;
+mod motion;
+mod motion_bound;
 mod obb;
 mod queries;
 mod spheres;
@@ -82,8 +103,11 @@ mod staged;
 mod urdf;
 
 #[cfg(test)]
+mod motion_tests;
+#[cfg(test)]
 mod tests;
 
+pub use motion::{MotionAnswer, MotionLimit, MotionOptions};
 pub use queries::{Against, NearestPair};
 pub use urdf::JointKind;
 
