@@ -26,6 +26,7 @@ pub struct ContactManifold {
     distances: Py<PyArray1<f64>>,
     error_bounds: Py<PyArray1<f64>>,
     signed_distance: SignedDistance,
+    len: usize,
 }
 
 fn rows(py: Python<'_>, ps: impl Iterator<Item = [f64; 3]>) -> Py<PyArray2<f64>> {
@@ -51,6 +52,7 @@ impl ContactManifold {
             distances: col(&|p| p.distance),
             error_bounds: col(&|p| p.error_bound),
             signed_distance: sd,
+            len: m.points.len(),
         }
     }
 }
@@ -92,14 +94,13 @@ impl ContactManifold {
     fn signed_distance(&self) -> SignedDistance {
         self.signed_distance.clone()
     }
-    fn __len__(&self, py: Python<'_>) -> usize {
-        self.distances.bind(py).len()
+    fn __len__(&self) -> usize {
+        self.len
     }
-    fn __repr__(&self, py: Python<'_>) -> String {
+    fn __repr__(&self) -> String {
         format!(
             "ContactManifold(points={}, signed_distance={:?})",
-            self.__len__(py),
-            self.signed_distance.value
+            self.len, self.signed_distance.value
         )
     }
 }
