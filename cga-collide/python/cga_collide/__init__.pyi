@@ -775,6 +775,48 @@ def signed_distance(a: Shape, b: Shape) -> SignedDistance:
 def signed_distance_at(a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike) -> SignedDistance:
     """``signed_distance`` of the shapes placed by their ``(4, 4)`` poses."""
 
+@final
+class ContactManifold:
+    """The contact of two shapes (at most 4 points, one region): ``normal`` ``(3,)`` unit from
+    ``a`` to ``b``; ``points`` ``(k, 3)`` halfway between ``points_a`` (on ``a``) and
+    ``points_b`` (on ``b``, over ``points_a`` along the normal); ``distances`` ``(k,)``
+    ``(points_b - points_a) @ normal`` (negative where they overlap); ``error_bounds`` ``(k,)``
+    proved: when the shapes meet each point is within its bound of both shapes (in their
+    intersection when it is 0), when apart ``points_a``/``points_b`` are within it of ``a``/``b``;
+    ``signed_distance`` the pair's certified ``SignedDistance``.
+    """
+
+    @property
+    def normal(self) -> _Float64Array:
+        """The unit normal from ``a`` to ``b``, ``(3,)`` float64."""
+    @property
+    def points(self) -> _Float64Array:
+        """The contact points, ``(k, 3)`` float64."""
+    @property
+    def points_a(self) -> _Float64Array:
+        """The points on ``a``, ``(k, 3)`` float64."""
+    @property
+    def points_b(self) -> _Float64Array:
+        """The points on ``b``, ``(k, 3)`` float64."""
+    @property
+    def distances(self) -> _Float64Array:
+        """The signed distance of each point along the normal, ``(k,)`` float64."""
+    @property
+    def error_bounds(self) -> _Float64Array:
+        """The proved bound of each point, ``(k,)`` float64."""
+    @property
+    def signed_distance(self) -> SignedDistance:
+        """The pair's certified signed distance."""
+    def __len__(self) -> int: ...
+
+def contact_manifold(a: Shape, b: Shape, margin: float = 0.0) -> Optional[ContactManifold]:
+    """The contact manifold of two shapes, or ``None`` when they are farther apart than
+    ``margin`` (a finite distance ``>= 0``)."""
+def contact_manifold_at(
+    a: Shape, pose_a: ArrayLike, b: Shape, pose_b: ArrayLike, margin: float = 0.0
+) -> Optional[ContactManifold]:
+    """``contact_manifold`` of the shapes placed by their ``(4, 4)`` poses."""
+
 def pose_from_degrees(degrees: ArrayLike, translation: Optional[ArrayLike] = None) -> _Float64Array:
     """The ``(4, 4)`` float64 pose that rotates by ``degrees[0]`` about the x axis, then by
     ``degrees[1]`` about the y axis, then by ``degrees[2]`` about the z axis (fixed axes,
@@ -789,6 +831,7 @@ __all__ = [
     "Capsule",
     "CgaError",
     "Collider",
+    "ContactManifold",
     "Cone",
     "ConvexHull",
     "Cuboid",
@@ -807,6 +850,8 @@ __all__ = [
     "Shape",
     "SignedDistance",
     "Triangle",
+    "contact_manifold",
+    "contact_manifold_at",
     "distance",
     "distance_at",
     "distance_batch",

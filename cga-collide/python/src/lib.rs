@@ -10,6 +10,7 @@ mod answers;
 mod collider;
 mod convert;
 mod distance;
+mod manifold;
 mod motion;
 mod points;
 mod robot;
@@ -51,6 +52,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     shapes::register(m)?;
     shape_queries::register(m)?;
     signed_distance::register(m)?;
+    manifold::register(m)?;
     m.add_function(wrap_pyfunction!(pose_from_degrees, m)?)?;
     m.add("CgaError", m.py().get_type::<convert::CgaError>())?;
     m.add("ROTATION_TOLERANCE", convert::ROTATION_TOLERANCE)?;

@@ -60,6 +60,7 @@ mod contacts;
 mod containment;
 mod distance;
 mod hits;
+mod manifold;
 mod nearest;
 mod pairs;
 mod pose;

@@ -59,6 +59,10 @@ pub use shapes::depth::{
     signed_distance, signed_distance_at, signed_distance_batch, SignedDistance, SignedDistanceKind,
     MAX_HULL_POINTS,
 };
+pub use shapes::manifold::{
+    contact_manifold, contact_manifold_at, contact_manifold_batch, ContactManifold, ManifoldPoint,
+    MAX_POINTS_PER_REGION,
+};
 pub use shapes::named::*;
 pub use shapes::{
     distance, distance_at, distance_batch, intersects, intersects_at, intersects_batch,

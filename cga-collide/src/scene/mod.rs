@@ -71,10 +71,12 @@
 //! ```
 
 mod broad_phase;
+mod manifolds;
 mod queries;
 
 mod pair;
 
+pub use manifolds::PairManifolds;
 pub use queries::{NearestPair, SegmentHit};
 
 use std::collections::HashSet;

@@ -331,7 +331,7 @@ impl Scene {
     }
 
     /// The tested pairs of slots whose boxes come within `reach`, `a < b`.
-    fn candidates(&self, reach: f64) -> Vec<(u32, u32)> {
+    pub(super) fn candidates(&self, reach: f64) -> Vec<(u32, u32)> {
         let mut pairs = self.broad.pairs(reach);
         pairs.retain(|&(a, b)| self.tested(a, b));
         pairs

@@ -22,6 +22,7 @@ use crate::query::CertifiedDistance;
 use crate::shape::{PosePair, Shape};
 
 pub(crate) mod depth;
+pub(crate) mod manifold;
 pub(crate) mod named;
 pub(crate) mod polytopal;
 pub(crate) mod round;
