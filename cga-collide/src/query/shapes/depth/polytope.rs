@@ -155,7 +155,7 @@ fn hull_core(h: &ConvexHull) -> Core {
     let corners: Vec<P3> = h.corners().iter().map(p3).collect();
     let mut edges: Vec<(u32, u32)> = Vec::new();
     let mut facet_pairs = Vec::new();
-    let mut edge_index = |u: u32, v: u32, edges: &mut Vec<(u32, u32)>| {
+    let edge_index = |u: u32, v: u32, edges: &mut Vec<(u32, u32)>| {
         let key = (u.min(v), u.max(v));
         match edges.iter().position(|e| *e == key) {
             Some(i) => i,
