@@ -26,11 +26,14 @@ fn piso(p: &Isometry3<f64>) -> PIso<f64> {
     PIso::new(PVector::new(t.x, t.y, t.z), PVector::new(r.x, r.y, r.z))
 }
 
+/// Parry's two shapes with their poses.
+type ParryPair = (Box<dyn ps::Shape>, PIso<f64>, Box<dyn ps::Shape>, PIso<f64>);
+
 /// One pair in both libraries: ours placed in the world, parry's shapes with their poses.
 struct Pair {
     name: &'static str,
     ours: (Shape, Shape),
-    theirs: (Box<dyn ps::Shape>, PIso<f64>, Box<dyn ps::Shape>, PIso<f64>),
+    theirs: ParryPair,
 }
 
 fn pair(

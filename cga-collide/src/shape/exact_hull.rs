@@ -398,7 +398,7 @@ mod tests {
                     assert_ne!(s, Ordering::Greater);
                 }
             }
-            for i in 0..v.len() {
+            for (i, corner) in v.iter().enumerate() {
                 let others: Vec<Point3<f64>> = h
                     .corners
                     .iter()
@@ -415,7 +415,7 @@ mod tests {
                             &w[t[0] as usize],
                             &w[t[1] as usize],
                             &w[t[2] as usize],
-                            &v[i],
+                            corner,
                         ) == Ordering::Greater
                     });
                 assert!(outside, "corner {i} is inside the hull of the others");
