@@ -100,7 +100,8 @@ pub struct ContactManifold {
 }
 
 /// The contact manifold of two shapes, or `None` when they are farther apart than `margin`
-/// (see the [module docs](self) for the definitions, what is certified and what is refused).
+/// (the definitions, what is certified and what is refused: [`ContactManifold`] and the section
+/// "Contact manifolds" of `docs/contacts.md`).
 ///
 /// ```
 /// use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::Cuboid};
