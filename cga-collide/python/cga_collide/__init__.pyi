@@ -673,13 +673,18 @@ class ConvexHull(Shape):
         """The points as given, a fresh ``(n, 3)`` float64 array."""
     @property
     def corners(self) -> _Float64Array:
-        """The hull's corners, exactly, a fresh ``(k, 3)`` float64 array."""
+        """The hull's corners, exactly (a point one ulp outside a face is a corner, one inside is
+        not), a fresh ``(k, 3)`` float64 array: a flat polygon's in boundary order.
+        """
     @property
     def triangles(self) -> _Int64Array:
-        """A solid hull's boundary triangles (rows of ``corners``), ``(m, 3)`` int64."""
+        """For a solid hull, its boundary as triangles of row indices into ``corners``,
+        counter-clockwise seen from outside, an ``(m, 3)`` int64 array; ``(0, 3)`` for a point,
+        segment or flat polygon.
+        """
     @property
     def dimension(self) -> int:
-        """0 point, 1 segment, 2 flat polygon, 3 solid."""
+        """0 for a point, 1 for a segment, 2 for a flat polygon, 3 for a solid."""
 
 @final
 class Triangle(Shape):

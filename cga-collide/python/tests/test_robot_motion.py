@@ -74,14 +74,24 @@ def test_answers_agree_with_dense_sampling_and_batches():
             assert a.status == "collides", a
             assert robot.colliding_pairs(a.configuration, against="both") == a.pairs != []
             np.testing.assert_array_equal(a.configuration, (1 - a.time) * q0 + a.time * q1)
-            before = (1 - t * a.free_until) * q0 + t * a.free_until * q1
-            assert not robot.collides_batch(before, against="both").any()
+            # Certified free: [0, free_until), empty when the motion starts in contact.
+            if a.free_until > 0.0:
+                s = t[:-1]
+                before = (1 - s * a.free_until) * q0 + s * a.free_until * q1
+                assert not robot.collides_batch(before, against="both").any()
+            else:
+                assert a.time == 0.0 and robot.collides(q0, against="both")
     assert statuses == {"free", "collides"}
 
 
 def test_budgets_and_errors():
     robot = arm()
-    q0, q1 = np.zeros(4), np.array([0.0, 2.4, 0.0, 0.0])
+    # A free motion whose end is free too: one configuration cannot certify it. (Towards a
+    # colliding end, one configuration is enough for an answer: the end itself collides.)
+    q0, q1 = np.zeros(4), np.array([0.0, 1.2, 0.0, 0.0])
+    assert robot.motion_collision(q0, q1).is_free
+    ends_in_contact = robot.motion_collision(q0, np.array([0.0, 2.4, 0.0, 0.0]), max_configurations=1)
+    assert ends_in_contact.status == "collides" and ends_in_contact.time == 1.0
     spent = robot.motion_collision(q0, q1, max_configurations=1)
     assert spent.status == "undecided" and spent.limit == "configurations"
     assert spent.time is None and spent.configuration is None and spent.pairs == []
