@@ -58,7 +58,10 @@ class Depth:
         self.depth = float(depth)
         self.error_bound = float(error_bound)
         self.normal = normal
-        self.witness_a, self.witness_b = witnesses if witnesses is not None else (None, None)
+        self.witness_a: Optional[np.ndarray] = None
+        self.witness_b: Optional[np.ndarray] = None
+        if witnesses is not None:
+            self.witness_a, self.witness_b = witnesses
         self.kind = kind
 
 
