@@ -100,9 +100,9 @@ impl Collider {
     /// assert_eq!(regions.len(), 1);
     /// assert!(regions[0].points.len() <= 4);
     /// // Every intersecting triangle counts with its whole area, so here the side faces tilt
-/// // the (uncertified) normal away from +z: a unit vector pointing up and out.
-/// let n = regions[0].normal;
-/// assert!((n.norm() - 1.0).abs() < 1e-12 && n.x > 0.0 && n.y > 0.0 && n.z > 0.0);
+    /// // the (uncertified) normal away from +z: a unit vector pointing up and out.
+    /// let n = regions[0].normal;
+    /// assert!((n.norm() - 1.0).abs() < 1e-12 && n.x > 0.0 && n.y > 0.0 && n.z > 0.0);
     /// # Ok::<(), cga_collide::Error>(())
     /// ```
     pub fn contact_manifolds(&self, other: &Collider) -> Vec<ContactManifold> {
