@@ -30,8 +30,10 @@
 //! inputs give the same manifold, bit for bit.
 //!
 //! # What is certified
-//! `error_bound` of each point is proved with the crate's exact distance of that point to each
-//! shape:
+//! `error_bound` of each point is a proved upper bound of that point's distance to each shape:
+//! in plain `f64` with proved rounding for balls, capsules, segments, cuboids and half-spaces
+//! (the distance to a point of the shape built from clamped exact parameters, `0` when the
+//! point is proved inside), and from the crate's exact point–shape distance for the others:
 //! * when the shapes meet (touching or overlapping): `point` lies within `error_bound` of `a`
 //!   and within `error_bound` of `b`; `error_bound == 0` means `point` lies exactly in the
 //!   intersection `a ∩ b`;
@@ -51,6 +53,7 @@
 
 mod clip;
 mod feature;
+mod point_bound;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 
@@ -156,8 +159,12 @@ pub fn contact_manifold(
     }))
 }
 
-/// The proved upper end of the distance from `p` to `shape`.
+/// The proved upper end of the distance from `p` to `shape`: the `f64` bound where it applies,
+/// else the exact point–shape distance.
 fn distance_up_to(p: &Point3<f64>, shape: &Shape) -> Result<f64, Error> {
+    if let Some(bound) = point_bound::upper_distance(p, shape) {
+        return Ok(bound);
+    }
     let d = distance(&Shape::Ball(Ball::new(*p, 0.0)?), shape)?;
     // Rounded up: the sum of two non-negative `f64`s, nudged past its rounding.
     let sum = d.distance + d.error_bound;
