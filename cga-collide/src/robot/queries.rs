@@ -2,6 +2,7 @@
 //! each tested pair of links (or link and environment object) set aside by its world boxes or
 //! decided by the exact test of its parts.
 
+use crate::collider::Bounded;
 use crate::error::Error;
 use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
@@ -265,21 +266,22 @@ impl Robot {
                 b: theirs,
                 solid: self.solid,
             };
-            // Once a best is known, the exact clearance test sets aside a pair farther than it
-            // for much less than its distance costs.
-            if bound.is_finite() && !test.within(bound)? {
-                continue;
-            }
-            let d = test.distance()?;
-            lowest = lowest.min(d.distance - d.error_bound);
-            if d.distance < bound {
-                best = Some((a, o, d));
+            // The best distance so far goes into the pair's own search: nothing proved
+            // farther than it is examined there.
+            match test.distance_below(bound)? {
+                Bounded::Below(d) => {
+                    lowest = lowest.min(d.distance - d.error_bound);
+                    if d.distance < bound {
+                        best = Some((a, o, d));
+                    }
+                }
+                Bounded::AtLeast(at_least) => lowest = lowest.min(at_least),
             }
         }
         Ok(best.map(|(a, o, mut d)| {
-            // Skipped pairs (by a bound, or not within the best distance by the exact
-            // clearance test) are at least the best distance away; examined ones at least
-            // `lowest`: the bound covers both.
+            // Pairs skipped by a bound are at least the best distance away; searched ones at
+            // least `lowest` (their certified lower end, or the lower bound their search
+            // proved): the bound covers both.
             d.error_bound = d.error_bound.max(d.distance - lowest);
             let (na, nb) = (self.link_names[a].clone(), self.name(o));
             if na <= nb {
