@@ -231,15 +231,23 @@ impl Robot {
     /// [`Error::UnsupportedPair`] when it has to be examined.
     pub fn nearest(&self, q: &[f64], against: Against) -> Result<Option<NearestPair>, Error> {
         let mut st = Staged::new(self, q)?;
-        // Every part pair with a lower bound on its distance from the spheres (no placing),
-        // examined nearest first: the search stops at the first bound at or past the best.
+        // Every part pair with a lower bound on its distance, the larger of its spheres' gap
+        // and its placed world boxes' (placing is cheap next to a distance search, and the
+        // boxes order the pairs much better than the spheres of long links), examined nearest
+        // first: the search stops at the first bound at or past the best, so the pair that
+        // wins is usually searched first and every later search starts with its distance.
         let mut candidates = Vec::new();
         for (a, o) in self.units(against) {
+            st.place_link(a)?;
+            if let Other::Link(b) = o {
+                st.place_link(b)?;
+            }
             for k in self.link_parts[a].clone() {
                 let sphere = st.part_sphere(k);
                 for i in 0..self.member_count(o) {
                     let gap = sphere.gap_lower(&self.member_sphere(&st, o, i));
-                    candidates.push((gap, a, o, k, i));
+                    let boxes = box_gap_lower(&st.part(k).bbox, &self.member(&st, o, i).1.bbox);
+                    candidates.push((gap.max(boxes), a, o, k, i));
                 }
             }
         }
@@ -252,15 +260,8 @@ impl Robot {
             if gap >= bound {
                 break;
             }
-            st.place_link(a)?;
-            if let Other::Link(b) = o {
-                st.place_link(b)?;
-            }
             let mine = (&self.parts[k].geometry, st.part(k));
             let theirs = self.member(&st, o, i);
-            if box_gap_lower(&mine.1.bbox, &theirs.1.bbox) >= bound {
-                continue;
-            }
             let test = PairTest {
                 a: mine,
                 b: theirs,
