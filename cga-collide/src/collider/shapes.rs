@@ -321,7 +321,9 @@ impl Collider {
         // upper end of an examined triangle, itself at least `lower`.
         let (i, d) = match best {
             // (A NaN distance goes on, to be refused below.)
-            Some((i, d)) if cutoff.is_infinite() || !(d.distance >= cutoff) => (i, d),
+            Some((i, d)) if cutoff.is_infinite() || d.distance < cutoff || d.distance.is_nan() => {
+                (i, d)
+            }
             _ => return Ok(Bounded::AtLeast(lower.min(cutoff))),
         };
         let error_bound = d.error_bound.max((d.distance - lower).next_up());
