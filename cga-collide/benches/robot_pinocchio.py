@@ -28,6 +28,7 @@ on the first `--distance-configs` configurations. Each figure is the median over
 
 import argparse
 import json
+import os
 import pathlib
 import sysconfig
 import time
@@ -266,6 +267,12 @@ def main():
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--timing-configs", type=int, default=2000)
     ap.add_argument("--distance-configs", type=int, default=100)
+    # The environment rows cost far more per configuration (a link near the cylinder takes
+    # milliseconds: the exact triangle-cylinder test), so they may be given fewer.
+    ap.add_argument("--env-configs", type=int, default=None,
+                    help="configurations for the environment rows' agreement (default --configs)")
+    ap.add_argument("--env-timing-configs", type=int, default=None,
+                    help="configurations timed in the environment rows (default --timing-configs)")
     args = ap.parse_args()
     out = []
     for name in args.robots.split(","):
@@ -274,20 +281,23 @@ def main():
         robot.set_environment(our_scene())
         filter_robot.set_environment(our_scene(capsules=True))
         qs = sample(robot, args.configs, args.seed)
-        timed = qs[: args.timing_configs]
         for against in ("self", "environment"):
             if against == "self":
                 peer = Pinocchio(urdf, share, robot.allowed_pairs())
+                checked, timed = qs, qs[: args.timing_configs]
             else:  # every link's geometry against every environment object
                 peer = Pinocchio(urdf, share, [], environment=True)
+                checked = qs[: args.env_configs or args.configs]
+                timed = qs[: args.env_timing_configs or args.timing_configs]
             out.append(
                 {
                     "robot": name,
                     "against": against,
                     "pairs": robot.pairs_checked(against),
                     "pinocchio_geometry_pairs": len(peer.pair_links),
-                    "agreement": agreement(robot, peer, qs, against=against,
+                    "agreement": agreement(robot, peer, checked, against=against,
                                            filter_robot=filter_robot),
+                    "load_average_1_5_15": os.getloadavg(),
                     "timing": timings(robot, peer, timed, against, args.rounds,
                                       args.distance_configs if against == "self" else 0),
                 }

@@ -42,6 +42,16 @@ pub(crate) fn finite(d: CertifiedDistance, magnitude: f64) -> Result<CertifiedDi
     }
 }
 
+/// The answer of a distance search given a cutoff (the best distance a caller already has):
+/// the certified distance when the pair is nearer, or a proved lower bound when it is not.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Bounded {
+    /// Nearer than the cutoff: the certified distance, as the search without a cutoff gives it.
+    Below(CertifiedDistance),
+    /// Not nearer than the cutoff: the true distance is at least this (at most the cutoff).
+    AtLeast(f64),
+}
+
 fn rational(x: f64) -> Rational {
     // Meshes hold finite coordinates only.
     rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)

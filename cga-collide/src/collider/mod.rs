@@ -59,6 +59,7 @@ mod clearance;
 mod contacts;
 mod containment;
 mod distance;
+pub(crate) use distance::Bounded;
 mod hits;
 mod manifold;
 mod nearest;

@@ -39,6 +39,7 @@ use nalgebra::{Isometry3, Point3};
 
 use crate::bounding::shape_box::Reach;
 use crate::bounding::Aabb;
+use crate::collider::Bounded;
 use crate::collider::{Collider, Mode};
 use crate::error::Error;
 use crate::query::shapes::check_clearance;
@@ -260,9 +261,40 @@ impl Collider {
         frame: Frame,
         shape: &Shape,
     ) -> Result<CertifiedDistance, Error> {
+        match self.distance_to_shape_below_in(frame, shape, f64::INFINITY)? {
+            Bounded::Below(d) => Ok(d),
+            // With no cutoff, only a mesh without triangles has none examined.
+            Bounded::AtLeast(_) => Err(Error::Empty {
+                file: "Collider".to_owned(),
+            }),
+        }
+    }
+
+    /// [`distance_to_shape_at`](Self::distance_to_shape_at) when the mesh at `pose` and the
+    /// shape are nearer than `cutoff` (in `f64`), found by a search that sets aside every node
+    /// proved farther than `cutoff` from the start; otherwise [`Bounded::AtLeast`] with a proved
+    /// lower bound on their distance (at most `cutoff`). `cutoff = +∞` is
+    /// `distance_to_shape_at` (an empty mesh: `AtLeast(+∞)`).
+    pub(crate) fn distance_to_shape_below_at(
+        &self,
+        pose: &Isometry3<f64>,
+        shape: &Shape,
+        cutoff: f64,
+    ) -> Result<Bounded, Error> {
+        self.distance_to_shape_below_in(Frame::Posed(pose), shape, cutoff)
+    }
+
+    fn distance_to_shape_below_in(
+        &self,
+        frame: Frame,
+        shape: &Shape,
+        cutoff: f64,
+    ) -> Result<Bounded, Error> {
         let reach = self.check_shape_pair(frame, shape)?;
-        // The least proved upper bound on the distance so far: nodes farther are set aside.
-        let bound = Cell::new(f64::INFINITY);
+        let cutoff = cutoff.max(0.0);
+        // The least proved upper bound on the distance so far (or the cutoff): nodes farther
+        // are set aside.
+        let bound = Cell::new(cutoff);
         // The least proved lower bound over the triangles examined.
         let mut lower = f64::INFINITY;
         let mut best: Option<(u32, CertifiedDistance)> = None;
@@ -285,9 +317,15 @@ impl Collider {
             },
         )?;
         stopped::<()>(flow)?;
-        let (i, d) = best.ok_or_else(|| Error::Empty {
-            file: "Collider".to_owned(),
-        })?;
+        // A node set aside is farther than the bound at the time: at least the cutoff or the
+        // upper end of an examined triangle, itself at least `lower`.
+        let (i, d) = match best {
+            // (A NaN distance goes on, to be refused below.)
+            Some((i, d)) if cutoff.is_infinite() || d.distance < cutoff || d.distance.is_nan() => {
+                (i, d)
+            }
+            _ => return Ok(Bounded::AtLeast(lower.min(cutoff))),
+        };
         let error_bound = d.error_bound.max((d.distance - lower).next_up());
         if !(d.distance.is_finite() && error_bound.is_finite()) {
             return Err(Error::OutOfRange {
@@ -295,11 +333,11 @@ impl Collider {
                 limit: MAX_MAGNITUDE,
             });
         }
-        Ok(CertifiedDistance {
+        Ok(Bounded::Below(CertifiedDistance {
             error_bound,
             triangles: Some((i, 0)),
             ..d
-        })
+        }))
     }
 
     /// Checks the shape's and the mesh's range (in the frame asked) and says where the shape

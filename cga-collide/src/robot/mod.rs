@@ -105,6 +105,8 @@ mod urdf;
 #[cfg(test)]
 mod motion_tests;
 #[cfg(test)]
+mod nearest_tests;
+#[cfg(test)]
 mod tests;
 
 pub use motion::{MotionAnswer, MotionLimit, MotionOptions};

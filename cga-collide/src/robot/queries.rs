@@ -2,6 +2,7 @@
 //! each tested pair of links (or link and environment object) set aside by its world boxes or
 //! decided by the exact test of its parts.
 
+use crate::collider::Bounded;
 use crate::error::Error;
 use crate::parallel::over_batch;
 use crate::query::CertifiedDistance;
@@ -230,15 +231,23 @@ impl Robot {
     /// [`Error::UnsupportedPair`] when it has to be examined.
     pub fn nearest(&self, q: &[f64], against: Against) -> Result<Option<NearestPair>, Error> {
         let mut st = Staged::new(self, q)?;
-        // Every part pair with a lower bound on its distance from the spheres (no placing),
-        // examined nearest first: the search stops at the first bound at or past the best.
+        // Every part pair with a lower bound on its distance, the larger of its spheres' gap
+        // and its placed world boxes' (placing is cheap next to a distance search, and the
+        // boxes order the pairs much better than the spheres of long links), examined nearest
+        // first: the search stops at the first bound at or past the best, so the pair that
+        // wins is usually searched first and every later search starts with its distance.
         let mut candidates = Vec::new();
         for (a, o) in self.units(against) {
+            st.place_link(a)?;
+            if let Other::Link(b) = o {
+                st.place_link(b)?;
+            }
             for k in self.link_parts[a].clone() {
                 let sphere = st.part_sphere(k);
                 for i in 0..self.member_count(o) {
                     let gap = sphere.gap_lower(&self.member_sphere(&st, o, i));
-                    candidates.push((gap, a, o, k, i));
+                    let boxes = box_gap_lower(&st.part(k).bbox, &self.member(&st, o, i).1.bbox);
+                    candidates.push((gap.max(boxes), a, o, k, i));
                 }
             }
         }
@@ -251,35 +260,29 @@ impl Robot {
             if gap >= bound {
                 break;
             }
-            st.place_link(a)?;
-            if let Other::Link(b) = o {
-                st.place_link(b)?;
-            }
             let mine = (&self.parts[k].geometry, st.part(k));
             let theirs = self.member(&st, o, i);
-            if box_gap_lower(&mine.1.bbox, &theirs.1.bbox) >= bound {
-                continue;
-            }
             let test = PairTest {
                 a: mine,
                 b: theirs,
                 solid: self.solid,
             };
-            // Once a best is known, the exact clearance test sets aside a pair farther than it
-            // for much less than its distance costs.
-            if bound.is_finite() && !test.within(bound)? {
-                continue;
-            }
-            let d = test.distance()?;
-            lowest = lowest.min(d.distance - d.error_bound);
-            if d.distance < bound {
-                best = Some((a, o, d));
+            // The best distance so far goes into the pair's own search: nothing proved
+            // farther than it is examined there.
+            match test.distance_below(bound)? {
+                Bounded::Below(d) => {
+                    lowest = lowest.min(d.distance - d.error_bound);
+                    if d.distance < bound {
+                        best = Some((a, o, d));
+                    }
+                }
+                Bounded::AtLeast(at_least) => lowest = lowest.min(at_least),
             }
         }
         Ok(best.map(|(a, o, mut d)| {
-            // Skipped pairs (by a bound, or not within the best distance by the exact
-            // clearance test) are at least the best distance away; examined ones at least
-            // `lowest`: the bound covers both.
+            // Pairs skipped by a bound are at least the best distance away; searched ones at
+            // least `lowest` (their certified lower end, or the lower bound their search
+            // proved): the bound covers both.
             d.error_bound = d.error_bound.max(d.distance - lowest);
             let (na, nb) = (self.link_names[a].clone(), self.name(o));
             if na <= nb {

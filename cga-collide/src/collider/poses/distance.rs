@@ -12,7 +12,7 @@ use crate::bounding::oriented_boxes::OrientedGaps;
 use crate::bounding::placed_leaves::{with_scratch, Placed, Scratch};
 use crate::bounding::pose_tree::PoseNode;
 use crate::bounding::{box_distance2, boxes_within};
-use crate::collider::distance::{check_distance_range, finite};
+use crate::collider::distance::{check_distance_range, finite, Bounded};
 use crate::collider::nearest::{beyond, child_pairs, enqueue, improves, queued, unqueued};
 use crate::collider::{Collider, Mode};
 use crate::error::Error;
@@ -79,7 +79,12 @@ impl PosedPair<'_> {
     /// their [oriented boxes](Self::oriented_gaps), triangle pairs by the distance of their exact
     /// placed boxes, and each examined pair is handled exactly as in
     /// [`Collider::distance`](crate::collider::Collider::distance), ties included. Both meshes non-empty.
-    fn nearest(&self, open: &mut Open) -> (u32, u32) {
+    ///
+    /// Only pairs whose `f64` squared distance is at most `cutoff2` are candidates (`+∞`: every
+    /// pair): node and triangle pairs proved farther than `cutoff2` are skipped from the start.
+    /// `None` when no pair is a candidate; every pair is then proved farther than `cutoff2` or
+    /// left in `open`.
+    fn nearest(&self, open: &mut Open, cutoff2: f64) -> Option<(u32, u32)> {
         let (ta, tb) = (self.a.pose_tree(), self.b.pose_tree());
         let (na, nb) = (ta.nodes(), tb.nodes());
         let (fa, fb) = (&ta.oriented().boxes[..], &tb.oriented().boxes[..]);
@@ -88,8 +93,9 @@ impl PosedPair<'_> {
             s.oriented_gap2(&gaps, (i, &fa[i as usize]), (j, &fb[j as usize]), best)
         };
         with_scratch(na.len(), nb.len(), |s| {
-            let mut best = (f64::INFINITY, 0u32, 0u32);
-            let mut next = Some(queued(bound(s, 0, 0, f64::INFINITY), 0, 0));
+            let mut best = (cutoff2, u32::MAX, u32::MAX);
+            let mut found = false;
+            let mut next = Some(queued(bound(s, 0, 0, cutoff2), 0, 0));
             let mut leaf_b: Vec<(u32, [P3; 3], crate::bounding::Aabb)> = Vec::new();
             while let Some((lower, i, j)) = next.take().map(unqueued) {
                 if beyond(lower, best.0) {
@@ -108,8 +114,9 @@ impl PosedPair<'_> {
                                 continue;
                             }
                             let d = examine_pair(p.index, &pc, *y, q, best.0, open);
-                            if improves(d, p.index, *y, &best) {
+                            if d <= cutoff2 && (!found || improves(d, p.index, *y, &best)) {
                                 best = (d, p.index, *y);
+                                found = true;
                             }
                         }
                     }
@@ -126,7 +133,7 @@ impl PosedPair<'_> {
                     next = s.heap.pop();
                 }
             }
-            (best.1, best.2)
+            found.then_some((best.1, best.2))
         })
     }
 }
@@ -232,7 +239,8 @@ impl Collider {
         let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
         check_distance_range(magnitude)?;
         let mut open = Vec::new();
-        let found = pair.nearest(&mut open);
+        // With no cutoff the search always finds a pair (both meshes are non-empty).
+        let found = pair.nearest(&mut open, f64::INFINITY).unwrap_or((0, 0));
         let d = certified_mesh_distance(
             found,
             &open,
@@ -240,6 +248,53 @@ impl Collider {
             |y| placed_corners(other, pose_b, y),
         );
         finite(d, magnitude)
+    }
+
+    /// [`distance_at`](Self::distance_at) when the meshes are nearer than `cutoff` (in `f64`):
+    /// the same answer, found by a search that skips everything proved farther than `cutoff`
+    /// from the start; otherwise [`Bounded::AtLeast`] with a proved lower bound on their
+    /// distance, `cutoff` rounded down by at most a few units in the last place (the few
+    /// triangle pairs the search could not prove farther are decided by the exact clearance
+    /// test). `cutoff = +∞` is `distance_at`. The running bound of a search over many
+    /// pairs (a robot's nearest link pair) goes in as `cutoff`.
+    pub(crate) fn distance_below_at(
+        &self,
+        pose_a: &Isometry3<f64>,
+        other: &Collider,
+        pose_b: &Isometry3<f64>,
+        cutoff: f64,
+    ) -> Result<Bounded, Error> {
+        let pair = PosedPair::new(self, pose_a, other, pose_b)?;
+        let magnitude = pose_magnitude(self, pose_a).max(pose_magnitude(other, pose_b));
+        check_distance_range(magnitude)?;
+        let cutoff = cutoff.max(0.0);
+        let cutoff2 = cutoff * cutoff;
+        let mut open = Vec::new();
+        let Some(found) = pair.nearest(&mut open, cutoff2) else {
+            // Every pair not in `open` is proved farther than `cutoff2` (squared): farther than
+            // its correctly rounded square root less one ulp. An open pair not within that
+            // (exact test) is farther too; one within it keeps only its proved bound.
+            let lower = cutoff2.sqrt().next_down().max(0.0);
+            let open_lower = open
+                .iter()
+                .filter(|&&(lb, x, y)| {
+                    lb < lower
+                        && triangles_within(
+                            &placed_corners(self, pose_a, x),
+                            &placed_corners(other, pose_b, y),
+                            lower,
+                        )
+                })
+                .fold(lower, |m, &(lb, _, _)| m.min(lb));
+            return Ok(Bounded::AtLeast(open_lower));
+        };
+        let d = certified_mesh_distance(
+            found,
+            &open,
+            |x| placed_corners(self, pose_a, x),
+            |y| placed_corners(other, pose_b, y),
+        );
+        finite(d, magnitude).map(Bounded::Below)
     }
 
     /// Distance 0 when the surfaces of `self` at `pose_a` and `other` at `pose_b` meet, found
