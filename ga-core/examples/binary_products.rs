@@ -13,7 +13,11 @@
 //! the `i`-th basis vector, 0 on the other first `k`, and uniform in `[-1, 1]` on the last
 //! `5 - k` (the basis `e1, e2, e3, eo, ei`, as in ga-benchmark's conformal model). Each line is
 //! the median over ROUNDS batches of the time per product of a batch of 1,024 operand pairs,
-//! each product inlined into the batch's loop and its result written to memory.
+//! each product inlined into the batch's loop and its result written to memory. A product that
+//! is zero by grade returns the zero-sized `ga_core::Zero`, whose store writes nothing.
+//!
+//! `BINARY_PRODUCTS_ONLY="OuterProduct 2 1"` runs that one line only (to count its instructions
+//! under `valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*run_batch*'`).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -108,6 +112,11 @@ fn time<A: Blade, B: Blade, O: Default + Clone>(
     u: &mut Uniform,
     op: impl Fn(&A, &B) -> O,
 ) {
+    if let Ok(only) = std::env::var("BINARY_PRODUCTS_ONLY") {
+        if only != format!("{name} {} {}", A::GRADE, B::GRADE) {
+            return;
+        }
+    }
     let lhs: Vec<A> = (0..BATCH).map(|_| A::random(u)).collect();
     let rhs: Vec<B> = (0..BATCH).map(|_| B::random(u)).collect();
     let mut out = vec![O::default(); BATCH];

@@ -41,6 +41,7 @@
 //! | [`pga3`] | the projective algebra Cl(3,0,1) (generated, degenerate signature) |
 //! | [`prelude`] | the product and scalar traits, to `use` in one line |
 //! | [`ops`] | the product traits: geometric, wedge, contractions, scalar, regressive, sandwich |
+//! | [`zero`](mod@zero) | [`Zero`], the zero-sized result of a product that is zero by grade |
 //! | [`scalar`] | the scalar traits ([`Ring`](scalar::Ring), [`Field`](scalar::Field), [`Real`](scalar::Real), [`Elementary`](scalar::Elementary)), [`Rational`](scalar::Rational), SIMD lanes ([`scalar::lanes`]) |
 //! | [`symbolic`] | multivariate polynomials with rational coefficients ([`Poly`](symbolic::Poly)), parsing (also over your own value types), LaTeX |
 //! | [`exp_log`] | exponentials, logarithms and square roots of versors, in closed form |
@@ -88,12 +89,14 @@ pub mod reference;
 pub mod scalar;
 pub mod symbolic;
 pub mod vga3;
+pub mod zero;
 
 pub use approx;
 /// The generator, for the ready-made algebras' expression macros (`cga_null_expressions!`).
 #[doc(hidden)]
 pub use ga_macros as __ga_macros;
 pub use nalgebra;
+pub use zero::Zero;
 
 /// Everything needed to use generated algebras: the scalar and product traits.
 pub mod prelude {

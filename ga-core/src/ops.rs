@@ -6,7 +6,8 @@
 
 /// The geometric product `a b` (operator `*`).
 pub trait Geometric<Rhs = Self> {
-    /// The smallest declared type that holds every nonzero blade of the product.
+    /// The smallest declared type that holds every nonzero blade of the product, or
+    /// [`Zero`](crate::Zero) when the product is zero by grade.
     type Output;
     /// The geometric product.
     fn geometric(&self, rhs: &Rhs) -> Self::Output;
@@ -14,7 +15,8 @@ pub trait Geometric<Rhs = Self> {
 
 /// The outer (wedge) product `a ∧ b` (operator `^`).
 pub trait Wedge<Rhs = Self> {
-    /// The smallest declared type that holds every nonzero blade of the product.
+    /// The smallest declared type that holds every nonzero blade of the product, or
+    /// [`Zero`](crate::Zero) when the product is zero by grade.
     type Output;
     /// The outer product.
     fn wedge(&self, rhs: &Rhs) -> Self::Output;
@@ -22,7 +24,8 @@ pub trait Wedge<Rhs = Self> {
 
 /// The left contraction `a ⌋ b` (operator `|`).
 pub trait LeftContraction<Rhs = Self> {
-    /// The smallest declared type that holds every nonzero blade of the product.
+    /// The smallest declared type that holds every nonzero blade of the product, or
+    /// [`Zero`](crate::Zero) when the product is zero by grade.
     type Output;
     /// The left contraction.
     fn left_contraction(&self, rhs: &Rhs) -> Self::Output;
@@ -30,7 +33,8 @@ pub trait LeftContraction<Rhs = Self> {
 
 /// The right contraction `a ⌊ b`.
 pub trait RightContraction<Rhs = Self> {
-    /// The smallest declared type that holds every nonzero blade of the product.
+    /// The smallest declared type that holds every nonzero blade of the product, or
+    /// [`Zero`](crate::Zero) when the product is zero by grade.
     type Output;
     /// The right contraction.
     fn right_contraction(&self, rhs: &Rhs) -> Self::Output;
@@ -38,7 +42,7 @@ pub trait RightContraction<Rhs = Self> {
 
 /// The scalar product `⟨a b⟩₀`.
 pub trait ScalarProduct<Rhs = Self> {
-    /// The scalar type.
+    /// The scalar type, or [`Zero`](crate::Zero) for operands of different grades.
     type Output;
     /// The scalar product.
     fn scalar_product(&self, rhs: &Rhs) -> Self::Output;
@@ -46,7 +50,8 @@ pub trait ScalarProduct<Rhs = Self> {
 
 /// The regressive product `a ∨ b = undual(dual(a) ∧ dual(b))` (operator `&`).
 pub trait Regressive<Rhs = Self> {
-    /// The smallest declared type that holds every nonzero blade of the product.
+    /// The smallest declared type that holds every nonzero blade of the product, or
+    /// [`Zero`](crate::Zero) when the product is zero by grade.
     type Output;
     /// The regressive product.
     fn regressive(&self, rhs: &Rhs) -> Self::Output;

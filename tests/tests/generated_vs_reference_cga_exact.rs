@@ -125,7 +125,7 @@ where
         + Wedge<B>
         + LeftContraction<B>
         + RightContraction<B>
-        + ScalarProduct<B, Output = Sym>
+        + ScalarProduct<B>
         + Regressive<B>
         + SandwichUnit<B>
         + Add<B>
@@ -135,6 +135,7 @@ where
     <A as Wedge<B>>::Output: ToRef<Sym>,
     <A as LeftContraction<B>>::Output: ToRef<Sym>,
     <A as RightContraction<B>>::Output: ToRef<Sym>,
+    <A as ScalarProduct<B>>::Output: ToRef<Sym>,
     <A as Regressive<B>>::Output: ToRef<Sym>,
     <A as Add<B>>::Output: ToRef<Sym>,
     <A as Sub<B>>::Output: ToRef<Sym>,
@@ -169,7 +170,7 @@ where
     );
     cmp(
         "scalar_product",
-        Dm::scalar(sig, op2(<A as ScalarProduct<B>>::scalar_product, &a, &b)),
+        op2(<A as ScalarProduct<B>>::scalar_product, &a, &b).to_ref(sig),
         Dm::scalar(sig, ra.scalar_product(&rb)),
     );
     cmp(

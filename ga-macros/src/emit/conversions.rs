@@ -1,5 +1,6 @@
 //! Conversions: into the dense type and projection from it, between declared types whose
-//! blades include each other, and the dense type's unchecked general inverse.
+//! blades include each other, from and with `ga_core::Zero` (the result of a product that is
+//! zero by grade), and the dense type's unchecked general inverse.
 
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
@@ -75,8 +76,43 @@ pub(super) fn emit_conversions(alg: &Algebra, index: usize, t: &TypeModel) -> To
             }
         })
     });
+    let zero_items = zero_items(name);
     quote! {
         #dense_items
         #(#subset_conversions)*
+        #zero_items
+    }
+}
+
+/// `Zero<T>` (what a product that is zero by grade returns) converts into the type and adds to
+/// and subtracts from it on either side, so such a result can join a sum of this type.
+fn zero_items(name: &Ident) -> TokenStream {
+    let ring = ring();
+    let zero_ty = quote!(::ga_core::Zero<T>);
+    quote! {
+        impl<T: #ring> From<#zero_ty> for #name<T> {
+            #[inline]
+            fn from(_: #zero_ty) -> Self { #name::zero() }
+        }
+        impl<T: #ring> ::core::ops::Add<#zero_ty> for #name<T> {
+            type Output = Self;
+            #[inline]
+            fn add(self, _: #zero_ty) -> Self { self }
+        }
+        impl<T: #ring> ::core::ops::Sub<#zero_ty> for #name<T> {
+            type Output = Self;
+            #[inline]
+            fn sub(self, _: #zero_ty) -> Self { self }
+        }
+        impl<T: #ring> ::core::ops::Add<#name<T>> for #zero_ty {
+            type Output = #name<T>;
+            #[inline]
+            fn add(self, rhs: #name<T>) -> #name<T> { rhs }
+        }
+        impl<T: #ring> ::core::ops::Sub<#name<T>> for #zero_ty {
+            type Output = #name<T>;
+            #[inline]
+            fn sub(self, rhs: #name<T>) -> #name<T> { -rhs }
+        }
     }
 }

@@ -20,21 +20,31 @@ pub(super) fn emit_pair(alg: &Algebra, a: usize, b: usize) -> TokenStream {
         if !alg.is_emitted(model.output) {
             continue;
         }
-        let ty = out_ty(alg, model.output);
-        let body = bilinear_body(
-            alg,
-            &model.outputs,
-            model.output,
-            (&lhs, Output::Type(a)),
-            (&rhs, Output::Type(b)),
-        );
+        let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
+        // Zero by grade (no pair of blades contributes): a zero-sized `Zero<T>`, so the product
+        // costs nothing and storing its result writes nothing.
+        let (ty, body, out_name) = if terms == 0 {
+            (
+                quote!(::ga_core::Zero<T>),
+                quote!(let _ = rhs; ::ga_core::Zero::new()),
+                "Zero".to_string(),
+            )
+        } else {
+            let body = bilinear_body(
+                alg,
+                &model.outputs,
+                model.output,
+                (&lhs, Output::Type(a)),
+                (&rhs, Output::Type(b)),
+            );
+            let out_name = match model.output {
+                Output::Scalar => "scalar".to_string(),
+                Output::Type(i) => alg.types[i].name.to_string(),
+            };
+            (out_ty(alg, model.output), body, out_name)
+        };
         let trait_ident = format_ident!("{}", spec.trait_name);
         let method = format_ident!("{}", spec.method);
-        let terms: usize = model.outputs.iter().map(|(_, t)| t.len()).sum();
-        let out_name = match model.output {
-            Output::Scalar => "scalar".to_string(),
-            Output::Type(i) => alg.types[i].name.to_string(),
-        };
         let doc = format!(
             "{} `{an} {} {bn} → {out_name}`, {terms} multiplications.",
             spec.title, spec.symbol

@@ -71,6 +71,13 @@ impl ToRef<Rational> for Rational {
     }
 }
 
+/// A product that is zero by grade: the zero multivector.
+impl<T: Ring> ToRef<T> for ga_core::Zero<T> {
+    fn to_ref(&self, sig: &Signature) -> Dm<T> {
+        Dm::scalar(sig, self.value())
+    }
+}
+
 /// A generated type: built from a reference value by projection onto its blades.
 pub trait Gen<T>: ToRef<T> + Clone + Debug + Sized {
     /// The projection of `r` onto this type's blades, through the generated dense type and
@@ -199,7 +206,7 @@ where
         + Wedge<B>
         + LeftContraction<B>
         + RightContraction<B>
-        + ScalarProduct<B, Output = T>
+        + ScalarProduct<B>
         + Regressive<B>
         + Sandwich<B>
         + SandwichUnit<B>
@@ -210,6 +217,7 @@ where
     <A as Wedge<B>>::Output: ToRef<T>,
     <A as LeftContraction<B>>::Output: ToRef<T>,
     <A as RightContraction<B>>::Output: ToRef<T>,
+    <A as ScalarProduct<B>>::Output: ToRef<T>,
     <A as Regressive<B>>::Output: ToRef<T>,
     <A as Add<B>>::Output: ToRef<T>,
     <A as Sub<B>>::Output: ToRef<T>,
