@@ -93,7 +93,7 @@ pub(super) fn between(a: &HalfSpace, b: &HalfSpace) -> Option<SignedDistance> {
 
 /// Exactly: the sign of `Q − √s` (`s ≥ 0`).
 fn sign_minus_root(big_q: &Rational, s: &Rational) -> core::cmp::Ordering {
-    use core::cmp::Ordering::{Equal, Greater, Less};
+    use core::cmp::Ordering::{Equal, Less};
     if !big_q.is_positive() {
         return if big_q.is_zero() && s.is_zero() {
             Equal

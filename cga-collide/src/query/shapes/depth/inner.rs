@@ -72,7 +72,7 @@ fn admit(body: &Body, p: Point3<f64>, centre: &Point3<f64>) -> Option<P3> {
     if contains(body, &as_p3(p)) {
         return Some(as_p3(p));
     }
-    for k in [50, 46, 42, 36, 30, 24, 16, 8] {
+    for k in [53, 52, 50, 46, 42, 36, 30, 24, 16, 8] {
         let s = 1.0 - 0.5f64.powi(k);
         let x = centre + (p - centre) * s;
         if x.iter().all(|c| c.is_finite()) && contains(body, &as_p3(x)) {
@@ -101,6 +101,10 @@ pub(super) fn rim_points(body: &Body, dirs: &[Vector3<f64>]) -> Vec<P3> {
     }
     for dir in dirs {
         let w = dir - d * (dir.dot(&d) / dd);
+        // Rounding noise in a direction is dropped (any point admitted below is valid), so
+        // that an axis-aligned direction gives the exact rim point where there is one.
+        let len = w.norm();
+        let w = w.map(|c| if c.abs() <= 1e-12 * len { 0.0 } else { c });
         let len = w.norm();
         if !(len > 1e-9 * dir.norm() && len.is_finite()) {
             continue;
