@@ -7,8 +7,11 @@ Ours is exact up to one rounding with a proved bound (the reference is `signed_d
 `error_bound`, checked against an independent exact reference in the workspace tests); coal's
 error on a pair is `|coal − ours|` (to within our bound). Pairs whose coal input is not exactly
 the JSON solid (peer_shapes.py `exact`) are left out of the accuracy columns, and pairs we do
-not compute (cylinders or cones that meet another shape: `null`; pair types with no exact
-test at all, listed as `refused_by_ours`) are left out altogether.
+not compute (`null`: a cylinder or cone pair whose contact sign is not decided, see
+docs/contacts.md; pair types with no exact test at all, listed as `refused_by_ours`) are left
+out altogether. Cylinders and cones go to coal as `coal.Cylinder(radius, length)` /
+`coal.Cone(radius, length)` centred on the axis midpoint (coal_shapes.py); for pairs with a
+cylinder or cone our reference is the certified bracket's midpoint, its bound the half width.
 
 Per pair type, over the pairs: coal's median and largest absolute error, its largest error
 relative to max(|ours|, 1e-300) on overlapping pairs, wrong_sign (coal says apart where the

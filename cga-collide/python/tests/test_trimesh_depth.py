@@ -157,3 +157,16 @@ def test_crossing_without_a_vertex_inside_has_depth_zero():
     _, data, _ = contacts(two_cubes(), np.eye(4), tall, translation(3.0))
     assert data and all(c.depth_kind == "vertex" and c.depth == 0.0 for c in data)
     assert all(np.isclose(np.linalg.norm(c.normal), 1.0) for c in data)
+
+
+def test_shape_depth_of_a_cylinder_lying_on_a_box():
+    # The exact cylinder (not a mesh) sunk 0.125 into the top face of a box: certified depth.
+    table = cc.Cuboid.axis_aligned([0.0, 0.0, 0.0], [2.0, 2.0, 0.5])
+    lying = cc.Cylinder([-1.0, 0.0, 0.875], [1.0, 0.0, 0.875], 0.5)
+    sd = cc.signed_distance(table, lying)
+    assert sd.kind == "penetrating"
+    assert abs(sd.value + 0.125) <= sd.error_bound < 1e-13
+    assert np.allclose(sd.normal, [0.0, 0.0, 1.0])
+    resting = cc.Cylinder([-1.0, 0.0, 1.0], [1.0, 0.0, 1.0], 0.5)
+    sd = cc.signed_distance(table, resting)
+    assert (sd.kind, sd.value, sd.error_bound) == ("touching", 0.0, 0.0)

@@ -6,12 +6,16 @@
 //! the same expression is the signed distance in both cases. It is computed exactly (the
 //! minimum over the core's points in rationals) and rounded once. Two half-spaces with
 //! opposite normals form a slab or a gap, with signed distance `(p_b − p_a)·m_a / |m_a|`; any
-//! other two overlap however far one is moved, and have no finite depth.
+//! other two overlap however far one is moved, and have no finite depth. A cylinder or a cone
+//! has the same expression with its support function, which holds a square root: its sign is
+//! decided exactly and its value bounded with outward rounding ([`to_round`]).
 
 use ga_core::scalar::{rational_from_f64, Rational, Ring};
 use nalgebra::{Point3, Vector3};
 use num_traits::Signed;
 
+use super::body::Body;
+use super::interval::{dot3, lift as lift3};
 use super::polytope::Core;
 use super::rounding::signed_root_minus;
 use super::SignedDistance;
@@ -85,4 +89,75 @@ pub(super) fn between(a: &HalfSpace, b: &HalfSpace) -> Option<SignedDistance> {
         witness_b: a.point() + normal * v,
         kind,
     })
+}
+
+/// Exactly: the sign of `Q − √s` (`s ≥ 0`).
+fn sign_minus_root(big_q: &Rational, s: &Rational) -> core::cmp::Ordering {
+    use core::cmp::Ordering::{Equal, Less};
+    if !big_q.is_positive() {
+        return if big_q.is_zero() && s.is_zero() {
+            Equal
+        } else {
+            Less
+        };
+    }
+    (big_q * big_q).cmp(s)
+}
+
+/// The signed distance from the half-space `h` to a cylinder or cone `body` (`flip`: the
+/// round shape first). The value `min over x of (x − p)·m / |m|` is
+/// `(−h_S(−m) − p·m) / |m|`: bounded with outward rounding, its sign decided exactly branch by
+/// branch (each `Q − √s` with exact `Q`, `s`), so touching is exactly 0.
+pub(super) fn to_round(h: &HalfSpace, body: &Body, flip: bool) -> SignedDistance {
+    use core::cmp::Ordering::{Equal, Less};
+    let m = [h.normal().x, h.normal().y, h.normal().z];
+    let minus = m.map(|x| -x);
+    let p = [h.point().x, h.point().y, h.point().z];
+    let (mq, pq) = (m.map(q), p.map(q));
+    let pm = dot(&pq, &mq);
+    let sign = body
+        .branches(&minus)
+        .iter()
+        .map(|b| sign_minus_root(&(-b.q.clone() - &pm), &b.s))
+        .min()
+        .unwrap_or(Equal);
+    let mi = lift3(&m);
+    let g = (-body.support(&minus) - dot3(&lift3(&p), &mi)).div_positive(dot3(&mi, &mi).sqrt());
+    let (mut lo, mut hi) = (g.lo, g.hi);
+    let kind = match sign {
+        Less => {
+            hi = hi.min(0.0);
+            super::SignedDistanceKind::Penetrating
+        }
+        core::cmp::Ordering::Greater => {
+            lo = lo.max(0.0);
+            super::SignedDistanceKind::Separated
+        }
+        Equal => {
+            (lo, hi) = (0.0, 0.0);
+            super::SignedDistanceKind::Touching
+        }
+    };
+    let v = lo * 0.5 + hi * 0.5;
+    let e = if lo == hi {
+        0.0
+    } else {
+        ((hi - v).max(v - lo) * (1.0 + 4.0 * f64::EPSILON)).next_up()
+    };
+    let up = super::unit(h.normal());
+    let x = body.support_point(&-up);
+    let on_plane = x - up * v;
+    let (normal, wa, wb) = if flip {
+        (-up, x, on_plane)
+    } else {
+        (up, on_plane, x)
+    };
+    SignedDistance {
+        value: v,
+        error_bound: e,
+        normal,
+        witness_a: wa,
+        witness_b: wb,
+        kind,
+    }
 }

@@ -26,9 +26,14 @@
 //!   polytope `P − Q`, found exactly over a finite set of candidate facet normals
 //!   ([`polytope`]).
 //!
-//! Half-spaces use their support function exactly ([`half_space`]). Cylinders and cones get
-//! their certified distance when they are apart; when they meet the pair is
-//! [`Error::UnsupportedPair`] (their depth is not computed yet). Two half-spaces whose
+//! Half-spaces use their support function exactly ([`half_space`]), a cylinder's or cone's
+//! too (its sign decided exactly, its value bounded with outward rounding). Any other pair
+//! with a cylinder or a cone gets its certified distance when that proves it apart, and
+//! otherwise a certified bracket ([`curved`]): inner polytopes proved inside the round
+//! shapes give a lower bound of the depth, the true support functions in the inner
+//! optimum's direction an upper bound; the kind comes from the exact `intersects` and an
+//! exact touching test, and a meeting pair whose sign neither decides is
+//! [`Error::UnsupportedPair`] (as are the pairs `intersects` refuses). Two half-spaces whose
 //! normals are not opposite have no finite depth and are also [`Error::UnsupportedPair`], as
 //! are overlapping hulls of more than [`MAX_HULL_POINTS`] corners.
 //!
@@ -41,7 +46,9 @@
 //! `2^-30 · |value|` (about `1e-14` relative in practice, and microseconds instead of the exact
 //! path's milliseconds); otherwise (touching, tiny overlaps, extreme magnitudes) the exact
 //! squared depth is rounded once (a few ulps of `|value|`), so a one-ulp overlap of two boxes
-//! gets its exact tiny depth. The normal and the witnesses are rounded `f64` values, not
+//! gets its exact tiny depth. Pairs with a cylinder or a cone (other than half-spaces): the
+//! half width of the bracket, which the refinement brings below `32 · 2^-52` of the pair's
+//! scale where it converges within its round cap. The normal and the witnesses are rounded `f64` values, not
 //! certified; the normal of overlapping cores is the exact minimising facet direction,
 //! rounded.
 //!
@@ -61,8 +68,12 @@
 //! # Ok::<(), cga_collide::Error>(())
 //! ```
 
+mod body;
+mod curved;
 mod fast;
 mod half_space;
+mod inner;
+mod interval;
 mod polytope;
 mod rounding;
 #[cfg(test)]
@@ -132,9 +143,10 @@ fn unsupported(a: &Shape, b: &Shape) -> Error {
 /// points. Apart, it is their distance; touching, `0`; overlapping, minus the penetration depth
 /// (the length of the shortest translation of `b` after which the two only touch); translating
 /// `b` by `−value · normal` brings them into touching contact. Refused with
-/// [`Error::UnsupportedPair`]: a cylinder or cone that meets the other shape, two half-spaces
-/// whose normals are not opposite (no finite depth), overlapping hulls of more than
-/// [`MAX_HULL_POINTS`] corners.
+/// [`Error::UnsupportedPair`]: a cylinder or cone pair that `intersects` refuses or whose
+/// contact is within the bound of touching without an exact proof either way, two
+/// half-spaces whose normals are not opposite (no finite depth), overlapping hulls of more
+/// than [`MAX_HULL_POINTS`] corners.
 ///
 /// ```
 /// use cga_collide::{nalgebra::{Point3, Vector3}, query, shape::Cuboid};
@@ -153,12 +165,7 @@ pub fn signed_distance(a: &Shape, b: &Shape) -> Result<SignedDistance, Error> {
     a.check_range()?;
     b.check_range()?;
     if is_round(a) || is_round(b) {
-        let d = round::distance(a, b)?;
-        return if d.distance - d.error_bound > 0.0 {
-            Ok(apart(d.distance, d.error_bound, d.witness_a, d.witness_b))
-        } else {
-            Err(unsupported(a, b))
-        };
+        return round_pair(a, b);
     }
     match (a, b) {
         (Shape::HalfSpace(ha), Shape::HalfSpace(hb)) => {
@@ -172,6 +179,32 @@ pub fn signed_distance(a: &Shape, b: &Shape) -> Result<SignedDistance, Error> {
             .ok_or_else(|| unsupported(a, b)),
         _ => cores(a, b),
     }
+}
+
+/// A pair with a cylinder or a cone: against a half-space exactly ([`half_space::to_round`]);
+/// otherwise the certified distance when it proves the two apart, else the bracket of
+/// [`curved`], its kind from the exact `intersects` (whose refusals are kept).
+fn round_pair(a: &Shape, b: &Shape) -> Result<SignedDistance, Error> {
+    match (a, b) {
+        (Shape::HalfSpace(h), other) => {
+            return body::Body::of(other)
+                .map(|body| half_space::to_round(h, &body, false))
+                .ok_or_else(|| unsupported(a, b));
+        }
+        (other, Shape::HalfSpace(h)) => {
+            return body::Body::of(other)
+                .map(|body| half_space::to_round(h, &body, true))
+                .ok_or_else(|| unsupported(a, b));
+        }
+        _ => {}
+    }
+    if let Ok(d) = round::distance(a, b) {
+        if d.distance - d.error_bound > 0.0 {
+            return Ok(apart(d.distance, d.error_bound, d.witness_a, d.witness_b));
+        }
+    }
+    let meets = round::intersects(a, b)?;
+    curved::signed_distance(a, b, meets)
 }
 
 /// A separated answer from a certified distance and its witnesses.

@@ -67,6 +67,11 @@ impl Sum {
         })
     }
 
+    /// The `f64` vectors whose exact sum this is.
+    pub(super) fn parts(&self) -> &[P3] {
+        &self.terms[..self.len]
+    }
+
     /// The coordinates rounded to `f64`.
     pub(super) fn approx(&self) -> P3 {
         core::array::from_fn(|k| self.terms[..self.len].iter().map(|t| t[k]).sum())

@@ -195,16 +195,21 @@ fn half_spaces() {
 }
 
 #[test]
-fn cylinders_are_answered_when_apart_and_refused_when_meeting() {
+fn cylinders_are_answered_when_apart_and_when_meeting() {
     let cyl: Shape = Cylinder::new(Point3::origin(), Point3::new(0.0, 0.0, 1.0), 0.5)
         .unwrap()
         .into();
     let got = sd(&cyl, &ball([3.0, 0.0, 0.5], 0.5));
     assert_value(&got, 2.0, 1e-12);
-    assert!(matches!(
-        signed_distance(&cyl, &ball([0.0; 3], 0.5)),
-        Err(Error::UnsupportedPair { .. })
-    ));
+    // A ball centred on the lower cap: out through the cap, by its radius.
+    let got = sd(&cyl, &ball([0.0; 3], 0.5));
+    assert_eq!(got.kind, SignedDistanceKind::Penetrating);
+    assert_value(&got, -0.5, 1e-14);
+    assert!(
+        (got.normal + Vector3::z()).norm() < 1e-12,
+        "{:?}",
+        got.normal
+    );
 }
 
 #[test]
@@ -316,4 +321,55 @@ fn the_fast_path_agrees_with_the_exact_path() {
         answered > 150,
         "the fast path answered only {answered} of 300"
     );
+
+#[test]
+fn round_shapes_in_half_spaces_are_exact_at_contact() {
+    use crate::shape::Cone;
+    let ground: Shape = HalfSpace::new(Point3::origin(), Vector3::z())
+        .unwrap()
+        .into();
+    // Resting on its side, and a cone on its rim (axis tilted so that one rim point is
+    // lowest): touching, exactly 0.
+    let lying: Shape = Cylinder::new(Point3::new(-1.0, 0.0, 0.5), Point3::new(1.0, 0.5, 0.5), 0.5)
+        .unwrap()
+        .into();
+    let got = sd(&ground, &lying);
+    assert_eq!((got.value, got.error_bound), (0.0, 0.0));
+    assert_eq!(got.kind, SignedDistanceKind::Touching);
+    // Axis along (0.75, 0, 1): the lowest rim point is 0.625 · 0.6 = 0.375 below the base
+    // centre.
+    let cone: Shape = Cone::new(
+        Point3::new(0.75, 0.0, 1.375),
+        Point3::new(0.0, 0.0, 0.375),
+        0.625,
+    )
+    .unwrap()
+    .into();
+    let got = sd(&cone, &ground);
+    assert_eq!(got.kind, SignedDistanceKind::Touching, "{got:?}");
+    // Sunk by 2^-40 and lifted by it.
+    for (dz, kind) in [
+        (-(2f64.powi(-40)), SignedDistanceKind::Penetrating),
+        (2f64.powi(-40), SignedDistanceKind::Separated),
+    ] {
+        let moved = lying.placed(&Isometry3::translation(0.0, 0.0, dz)).unwrap();
+        let got = sd(&ground, &moved);
+        assert_eq!(got.kind, kind);
+        // Bounded by interval arithmetic: a few ulps of the scale.
+        assert_value(&got, dz, 1e-14);
+    }
+}
+
+#[test]
+fn a_cylinder_sunk_one_ulp_into_a_box_has_that_depth() {
+    let table = boxed([0.0; 3], [2.0, 2.0, 0.5]);
+    let z = 1f64.next_down();
+    let cyl: Shape = Cylinder::new(Point3::new(-1.0, 0.0, z), Point3::new(1.0, 0.0, z), 0.5)
+        .unwrap()
+        .into();
+    let got = sd(&table, &cyl);
+    assert_eq!(got.kind, SignedDistanceKind::Penetrating);
+    assert!((got.value + (1.0 - z)).abs() <= got.error_bound, "{got:?}");
+    assert!(got.error_bound < 1e-15);
+    assert_eq!(got.normal, Vector3::z());
 }

@@ -45,9 +45,8 @@
 //! to within a few ulps.
 //!
 //! # Refused
-//! The pairs [`signed_distance`] refuses ([`Error::UnsupportedPair`]): a cylinder or cone that
-//! meets the other shape (apart but within the margin they get a manifold), two half-spaces
-//! whose normals are not opposite, overlapping hulls of more than
+//! The pairs [`signed_distance`] refuses ([`Error::UnsupportedPair`]): a cylinder or cone pair
+//! whose contact it cannot decide (see there), two half-spaces whose normals are not opposite, overlapping hulls of more than
 //! [`MAX_HULL_POINTS`](crate::query::MAX_HULL_POINTS) points; and a margin that is not a finite
 //! number `>= 0` ([`Error::InvalidClearance`]).
 
