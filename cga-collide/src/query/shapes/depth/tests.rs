@@ -321,6 +321,7 @@ fn the_fast_path_agrees_with_the_exact_path() {
         answered > 150,
         "the fast path answered only {answered} of 300"
     );
+}
 
 #[test]
 fn round_shapes_in_half_spaces_are_exact_at_contact() {
