@@ -1,5 +1,10 @@
 //! Exact pair tests for every pair with a cylinder or a cone.
 //!
+//! Every query first asks the certified floating-point filter ([`filter`]): a separating
+//! direction or a common point proposed by an `f64` search and proved in interval arithmetic.
+//! Only the pairs it cannot prove (touching, a few ulps apart, degenerate) reach the exact
+//! methods of the table, so the answers are theirs.
+//!
 //! | pair | `intersects` | `within_distance(c)` | method |
 //! |---|---|---|---|
 //! | round – half-space | exact | exact | lowest cap disc or apex along the normal; `a + b√c` signs ([`half_space`]) |
@@ -136,9 +141,14 @@ fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
 }
 
 fn answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
-    if let Some(proved) = filter::within(a, b, c) {
-        return Ok(proved);
+    match filter::within(a, b, c) {
+        Some(proved) => Ok(proved),
+        None => exact_answer(query, a, b, c),
     }
+}
+
+/// The exact methods alone (what the filter's proofs must agree with).
+fn exact_answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
     let e = &q(c);
     let found = match (round(a), round(b)) {
         (Some(ra), _) => decide(&ra, other(b), e).or_else(|| {
