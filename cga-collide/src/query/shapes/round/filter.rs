@@ -73,7 +73,8 @@ fn apart(a: &Body, b: &Body, d: &P3, c: f64) -> bool {
 /// A common point, found by shrunk searches and proved.
 fn meets(a: &Body, b: &Body) -> bool {
     let (ka, kb) = (a.max_shrink(), b.max_shrink());
-    if !(ka + kb > 0.0) {
+    let shrinkable = ka + kb > 0.0;
+    if !shrinkable {
         return false;
     }
     let mut f = 0.5;
@@ -124,9 +125,7 @@ fn common_point(a: &Body, b: &Body, found: &Found) -> bool {
         let mut weight = Iv::point(0.0);
         for (v, &w) in vertices.iter().zip(&weights) {
             let p = &boxes[index(v)];
-            for k in 0..3 {
-                sum[k] = sum[k].add(Iv::point(w).mul(p[k]));
-            }
+            sum = core::array::from_fn(|k| sum[k].add(Iv::point(w).mul(p[k])));
             weight = weight.add(Iv::point(w));
         }
         Some(sum.map(|s| s.div_positive(weight)))
@@ -135,8 +134,8 @@ fn common_point(a: &Body, b: &Body, found: &Found) -> bool {
         let mut x = [0.0; 3];
         for (v, &w) in vertices.iter().zip(&weights) {
             let p = point(v);
-            for k in 0..3 {
-                x[k] += w / total * p[k];
+            for (xk, pk) in x.iter_mut().zip(p) {
+                *xk += w / total * pk;
             }
         }
         x
@@ -215,7 +214,8 @@ fn search(a: &Body, sa: f64, b: &Body, sb: f64, c: f64) -> Found {
         found.len = kept.max(1);
         found.v = nearest.point;
         found.norm2 = nearest.norm2;
-        if !(found.norm2 > 0.0) || !found.norm2.is_finite() {
+        let off_origin = found.norm2 > 0.0;
+        if !off_origin || !found.norm2.is_finite() {
             if !found.norm2.is_finite() {
                 found.norm2 = f64::INFINITY;
             }
