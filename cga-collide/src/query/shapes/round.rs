@@ -1,5 +1,10 @@
 //! Exact pair tests for every pair with a cylinder or a cone.
 //!
+//! Every query first asks the certified floating-point filter ([`filter`]): a separating
+//! direction or a common point proposed by an `f64` search and proved in interval arithmetic.
+//! Only the pairs it cannot prove (touching, a few ulps apart, degenerate) reach the exact
+//! methods of the table, so the answers are theirs.
+//!
 //! | pair | `intersects` | `within_distance(c)` | method |
 //! |---|---|---|---|
 //! | round – half-space | exact | exact | lowest cap disc or apex along the normal; `a + b√c` signs ([`half_space`]) |
@@ -25,10 +30,15 @@ use crate::error::Error;
 use crate::query::CertifiedDistance;
 use crate::shape::Shape;
 
+mod body;
 mod curved;
 mod distance;
 mod exact3;
+mod filter;
+#[cfg(test)]
+mod filter_tests;
 mod half_space;
+mod interval;
 mod meridian;
 mod planar;
 mod section;
@@ -130,7 +140,16 @@ fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
     }
 }
 
-fn answer(query: &'static str, a: &Shape, b: &Shape, e: &Rational) -> Result<bool, Error> {
+fn answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
+    match filter::within(a, b, c) {
+        Some(proved) => Ok(proved),
+        None => exact_answer(query, a, b, c),
+    }
+}
+
+/// The exact methods alone (what the filter's proofs must agree with).
+fn exact_answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
+    let e = &q(c);
     let found = match (round(a), round(b)) {
         (Some(ra), _) => decide(&ra, other(b), e).or_else(|| {
             // The first one may be the simpler side (a zero radius).
@@ -144,11 +163,11 @@ fn answer(query: &'static str, a: &Shape, b: &Shape, e: &Rational) -> Result<boo
 }
 
 pub(crate) fn intersects(a: &Shape, b: &Shape) -> Result<bool, Error> {
-    answer("intersects", a, b, &Rational::zero())
+    answer("intersects", a, b, 0.0)
 }
 
 pub(crate) fn within_distance(a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
-    answer("within_distance", a, b, &q(c))
+    answer("within_distance", a, b, c)
 }
 
 fn solid(s: &Shape) -> Option<distance::Solid> {
@@ -177,7 +196,7 @@ fn distance_round_first(
 
 pub(crate) fn distance(a: &Shape, b: &Shape) -> Result<CertifiedDistance, Error> {
     // `within_distance` always decides these pairs; `false` is never reached.
-    let within = |c: f64| answer("within_distance", a, b, &q(c)).unwrap_or(false);
+    let within = |c: f64| answer("within_distance", a, b, c).unwrap_or(false);
     if let Some(d) = distance_round_first(a, b, within) {
         return Ok(d);
     }

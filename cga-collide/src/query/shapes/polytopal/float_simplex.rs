@@ -2,18 +2,18 @@
 //! floating-point search's steps only: Ericson's Voronoi-region tests on fixed-size arrays, no
 //! allocation and no sub-simplex enumeration. Nothing here is a decision: the search's result
 //! is checked by the certificates, then the exact stages ([`super::simplex`] is the exact
-//! version, written over any ring).
+//! version, written over any ring). The round shapes' filter runs its search on it too.
 
 use super::cores::P3;
 
 /// Weights over the input points (zero for the points not used), the subset used (bit `i`
 /// for point `i`), the nearest point and its squared norm.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Nearest {
-    pub(super) weights: [f64; 4],
-    pub(super) used: u8,
-    pub(super) point: P3,
-    pub(super) norm2: f64,
+pub(in crate::query::shapes) struct Nearest {
+    pub(in crate::query::shapes) weights: [f64; 4],
+    pub(in crate::query::shapes) used: u8,
+    pub(in crate::query::shapes) point: P3,
+    pub(in crate::query::shapes) norm2: f64,
 }
 
 #[inline(always)]
@@ -164,7 +164,7 @@ fn tetrahedron(p: &[P3]) -> Nearest {
 }
 
 /// The point of the convex hull of `points` (one to four) nearest the origin, in `f64`.
-pub(super) fn nearest_to_origin(points: &[P3]) -> Nearest {
+pub(in crate::query::shapes) fn nearest_to_origin(points: &[P3]) -> Nearest {
     match points.len() {
         0 | 1 => Nearest {
             weights: [1.0, 0.0, 0.0, 0.0],

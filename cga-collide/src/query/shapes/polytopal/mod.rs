@@ -20,7 +20,7 @@
 mod certificate;
 mod cores;
 mod feature;
-mod float_simplex;
+pub(in crate::query::shapes) mod float_simplex;
 mod gjk;
 mod half_space;
 mod simplex;
