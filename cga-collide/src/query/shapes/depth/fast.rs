@@ -350,7 +350,7 @@ pub(super) fn signed_distance(a: &Shape, b: &Shape) -> Option<SignedDistance> {
         core_shape(b).unwrap_or_else(|| b.clone()),
     );
     let d = polytopal::distance(&ca, &cb);
-    if !(d.distance - d.error_bound > 0.0) || !d.error_bound.is_finite() {
+    if d.distance - d.error_bound <= 0.0 || d.distance.is_nan() || !d.error_bound.is_finite() {
         return None;
     }
     let value = d.distance - radii;
