@@ -26,6 +26,7 @@ pub(crate) mod manifold;
 pub(crate) mod named;
 pub(crate) mod polytopal;
 pub(crate) mod round;
+mod rounded_f64;
 
 fn is_round(s: &Shape) -> bool {
     matches!(s, Shape::Cylinder(_) | Shape::Cone(_))

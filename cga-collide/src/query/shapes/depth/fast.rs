@@ -25,12 +25,9 @@ use nalgebra::{Point3, Vector3};
 
 use super::{unit, SignedDistance, SignedDistanceKind};
 use crate::query::shapes::polytopal;
+use crate::query::shapes::rounded_f64::{cross, dot, tame, P3, U};
 use crate::shape::{Ball, Segment, Shape};
 
-type P3 = [f64; 3];
-
-/// The unit roundoff of `f64`.
-const U: f64 = f64::EPSILON * 0.5;
 /// The fast answer is kept when its bound is at most this fraction of `|value|`.
 const RELATIVE: f64 = 1.0 / (1u64 << 30) as f64;
 /// The most candidate-times-point evaluations the fast path spends before leaving the pair to
@@ -57,26 +54,6 @@ struct Prepared {
 
 fn p3(p: &Point3<f64>) -> P3 {
     [p.x, p.y, p.z]
-}
-
-fn dot(a: &P3, b: &P3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: &P3, b: &P3) -> P3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// Every nonzero value within `2^±250`: no product of three of them under- or overflows.
-fn tame(xs: &[f64]) -> bool {
-    const LOW: f64 = 5.5e-76; // 2^-250
-    const HIGH: f64 = 1.8e75; // 2^250
-    xs.iter()
-        .all(|x| *x == 0.0 || (x.abs() >= LOW && x.abs() <= HIGH))
 }
 
 fn all_pairs(n: usize) -> Vec<(usize, usize)> {

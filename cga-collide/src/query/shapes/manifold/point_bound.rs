@@ -9,31 +9,9 @@
 //! exactly `0`. It is used only when every nonzero input lies within `2^±250`, so each rounding
 //! is relative.
 
+use crate::query::shapes::rounded_f64::{cross, dot, tame, P3, U};
 use crate::shape::Shape;
 use nalgebra::Point3;
-
-type P3 = [f64; 3];
-
-const U: f64 = f64::EPSILON * 0.5;
-
-fn tame(xs: &[f64]) -> bool {
-    const LOW: f64 = 5.5e-76; // 2^-250
-    const HIGH: f64 = 1.8e75; // 2^250
-    xs.iter()
-        .all(|x| *x == 0.0 || (x.abs() >= LOW && x.abs() <= HIGH))
-}
-
-fn dot(a: &P3, b: &P3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: &P3, b: &P3) -> P3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
 
 fn p3(p: &Point3<f64>) -> P3 {
     [p.x, p.y, p.z]
