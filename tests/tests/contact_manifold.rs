@@ -224,7 +224,7 @@ fn capsules_on_a_box() {
 }
 
 #[test]
-fn cylinder_on_a_face_within_the_margin_and_refused_when_it_meets() {
+fn cylinder_on_a_face_within_the_margin_and_sunk_into_it() {
     // The round engine decides cylinders against balls, capsules, segments and half-spaces:
     // the face is the top of a half-space.
     let table: Shape = HalfSpace::new(Point3::new(0.0, 0.0, 0.5), Vector3::z())
@@ -249,10 +249,15 @@ fn cylinder_on_a_face_within_the_margin_and_refused_when_it_meets() {
         assert!((p.distance - 0.01).abs() < 1e-12);
     }
     assert!(contact_manifold(&table, &cyl(0.6), 0.05).unwrap().is_none());
-    assert!(matches!(
-        contact_manifold(&table, &cyl(0.45), 0.0),
-        Err(Error::UnsupportedPair { .. })
-    ));
+    // Sunk 0.05: the certified curved depth gives the pair's signed distance.
+    let m = manifold(&table, &cyl(0.45), 0.0);
+    let sd = m.signed_distance.unwrap();
+    assert_eq!(sd.kind, SignedDistanceKind::Penetrating);
+    assert!(
+        (sd.value + 0.05).abs() <= sd.error_bound.max(1e-12),
+        "{sd:?}"
+    );
+    assert!(!m.points.is_empty() && m.points.len() <= 4);
 }
 
 #[test]
