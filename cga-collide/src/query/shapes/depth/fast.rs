@@ -5,7 +5,8 @@
 //! **Overlapping cores.** The depth of the origin in `M = P − Q` is `min over unit n of
 //! h_M(n)` and, when `M` is solid, the minimum over its facet normals, each the cross product
 //! of two edge directions (a facet pair of `P` or of `Q`, or an edge of `P` with an edge of `Q`;
-//! see [`super::polytope`]). Each candidate `f` is formed in `f64` as `ñ` with a proved
+//! see [`super::polytope`]; between two solid hulls only the edge pairs whose Gauss-map arcs
+//! may cross, [`arcs`]). Each candidate `f` is formed in `f64` as `ñ` with a proved
 //! componentwise bound `|f − ñ| ≤ ε`; since `|h_M(f) − h_M(ñ)| ≤ Σ_k ε_k X_k` with `X_k` the
 //! largest `|x_k|` over `M`, every candidate gets a proved interval of `h_M(f)/|f|`. When every
 //! candidate's lower end is `> 0` the origin is inside every facet: the cores overlap, and the
@@ -15,11 +16,15 @@
 //! overflows and each rounding is relative).
 //!
 //! **Cores apart, radii overlapping** (a ball or capsule sunk into something): the cores'
-//! certified distance `d` from the `f64` search gives `d − r − s`.
+//! certified distance `d` gives `d − r − s`; for point, segment and cuboid cores `d` is
+//! bracketed in closed form ([`apart`]), otherwise it comes from the `f64` search.
 //!
 //! Either answer is returned only when its proved bound is at most `2^-30 · |value|`; otherwise
 //! (touching, a few ulps of overlap, huge or tiny coordinates, near-degenerate directions) the
 //! exact path decides, so every answer keeps its kind exactly.
+
+mod apart;
+mod arcs;
 
 use nalgebra::{Point3, Vector3};
 
@@ -50,6 +55,8 @@ struct Prepared {
     radius: f64,
     extent: P3,
     solid: bool,
+    /// Solid hulls: each direction's (edge's) Gauss-map arc, for pruning edge pairs.
+    arcs: Option<Vec<arcs::Arc>>,
 }
 
 fn p3(p: &Point3<f64>) -> P3 {
@@ -79,6 +86,7 @@ fn points_core(points: Vec<P3>, radius: f64) -> Prepared {
         radius,
         extent,
         solid: false,
+        arcs: None,
     }
 }
 
@@ -86,18 +94,22 @@ fn points_core(points: Vec<P3>, radius: f64) -> Prepared {
 /// boundary triangle as a facet pair.
 fn solid_hull(corners: Vec<P3>, triangles: &[[u32; 3]]) -> Prepared {
     let mut edges: Vec<(u32, u32)> = Vec::new();
+    let mut faces_of_edge: Vec<Vec<usize>> = Vec::new();
     let mut facet_pairs = Vec::new();
-    let mut index = |u: u32, v: u32| {
+    let mut index = |u: u32, v: u32, face: usize| {
         let key = (u.min(v), u.max(v));
-        edges.iter().position(|e| *e == key).unwrap_or_else(|| {
+        let at = edges.iter().position(|e| *e == key).unwrap_or_else(|| {
             edges.push(key);
+            faces_of_edge.push(Vec::new());
             edges.len() - 1
-        })
+        });
+        faces_of_edge[at].push(face);
+        at
     };
-    for t in triangles {
-        let i = index(t[0], t[1]);
-        let j = index(t[0], t[2]);
-        index(t[1], t[2]);
+    for (face, t) in triangles.iter().enumerate() {
+        let i = index(t[0], t[1], face);
+        let j = index(t[0], t[2], face);
+        index(t[1], t[2], face);
         facet_pairs.push((i, j));
     }
     let directions = edges
@@ -108,6 +120,7 @@ fn solid_hull(corners: Vec<P3>, triangles: &[[u32; 3]]) -> Prepared {
         })
         .collect();
     let extent = extent_of(&corners);
+    let arcs = arcs::of_hull(&corners, triangles, &faces_of_edge);
     Prepared {
         core: Core::Points(corners),
         directions,
@@ -115,6 +128,7 @@ fn solid_hull(corners: Vec<P3>, triangles: &[[u32; 3]]) -> Prepared {
         radius: 0.0,
         extent,
         solid: true,
+        arcs,
     }
 }
 
@@ -148,6 +162,7 @@ impl Prepared {
                     radius: 0.0,
                     extent: extent.map(|x: f64| x * (1.0 + 4.0 * U)),
                     solid: triple.abs() > 8.0 * U * size,
+                    arcs: None,
                 }
             }
             Shape::ConvexHull(h) => {
@@ -224,7 +239,15 @@ fn core_depth(a: &Prepared, b: &Prepared) -> Option<(f64, f64, P3, P3, P3)> {
     let mut lines: Vec<(usize, usize)> = a.facet_pairs.clone();
     lines.extend(b.facet_pairs.iter().map(|&(i, j)| (na + i, na + j)));
     for i in 0..na {
-        lines.extend((0..b.directions.len()).map(|j| (i, na + j)));
+        match (&a.arcs, &b.arcs) {
+            // Two solid hulls: only the edge pairs whose Gauss-map arcs may cross.
+            (Some(pa), Some(pb)) => lines.extend(
+                (0..b.directions.len())
+                    .filter(|&j| arcs::may_face(&pa[i], &pb[j]))
+                    .map(|j| (i, na + j)),
+            ),
+            _ => lines.extend((0..b.directions.len()).map(|j| (i, na + j))),
+        }
     }
     if lines.len() * 2 * (a.point_count() + b.point_count()) > BUDGET {
         return None;
@@ -321,17 +344,31 @@ pub(super) fn signed_distance(a: &Shape, b: &Shape) -> Option<SignedDistance> {
     if radii == 0.0 {
         return None;
     }
-    // Cores apart and radii reaching across: the certified core distance minus the radii.
-    let (ca, cb) = (
-        core_shape(a).unwrap_or_else(|| a.clone()),
-        core_shape(b).unwrap_or_else(|| b.clone()),
-    );
-    let d = polytopal::distance(&ca, &cb);
-    if d.distance - d.error_bound <= 0.0 || d.distance.is_nan() || !d.error_bound.is_finite() {
-        return None;
-    }
-    let value = d.distance - radii;
-    let bound = ((d.error_bound + 2.0 * U * (d.distance + radii)) * (1.0 + 4.0 * U)).next_up();
+    // Cores apart and radii reaching across: the cores' distance minus the radii, in closed
+    // form for point, segment and cuboid cores, else from the certified core distance.
+    let (distance, error, wa, wb) = match apart::bracket(&pa, &pb) {
+        Some(br) => {
+            let mid = (br.low + br.high) * 0.5;
+            let half = ((br.high - br.low) * 0.5 + 2.0 * U * br.high) * (1.0 + 4.0 * U);
+            (mid, half, Point3::from(br.x), Point3::from(br.y))
+        }
+        None => {
+            let (ca, cb) = (
+                core_shape(a).unwrap_or_else(|| a.clone()),
+                core_shape(b).unwrap_or_else(|| b.clone()),
+            );
+            let d = polytopal::distance(&ca, &cb);
+            if d.distance - d.error_bound <= 0.0
+                || d.distance.is_nan()
+                || !d.error_bound.is_finite()
+            {
+                return None;
+            }
+            (d.distance, d.error_bound, d.witness_a, d.witness_b)
+        }
+    };
+    let value = distance - radii;
+    let bound = ((error + 2.0 * U * (distance + radii)) * (1.0 + 4.0 * U)).next_up();
     if bound > RELATIVE * value.abs() {
         return None;
     }
@@ -340,13 +377,13 @@ pub(super) fn signed_distance(a: &Shape, b: &Shape) -> Option<SignedDistance> {
     } else {
         SignedDistanceKind::Penetrating
     };
-    let normal = unit(&(d.witness_b - d.witness_a));
+    let normal = unit(&(wb - wa));
     Some(SignedDistance {
         value,
         error_bound: bound,
         normal,
-        witness_a: d.witness_a + normal * pa.radius,
-        witness_b: d.witness_b - normal * pb.radius,
+        witness_a: wa + normal * pa.radius,
+        witness_b: wb - normal * pb.radius,
         kind,
     })
 }

@@ -33,7 +33,9 @@
 //! `error_bound` of each point is a proved upper bound of that point's distance to each shape:
 //! in plain `f64` with proved rounding for balls, capsules, segments, cuboids and half-spaces
 //! (the distance to a point of the shape built from clamped exact parameters, `0` when the
-//! point is proved inside), and from the crate's exact point–shape distance for the others:
+//! point is proved inside), for solid hulls (`0` when proved strictly inside every boundary
+//! plane) and triangles (the distance to the point under it, when that falls inside the
+//! triangle), and from the crate's exact point–shape distance for the rest:
 //! * when the shapes meet (touching or overlapping): `point` lies within `error_bound` of `a`
 //!   and within `error_bound` of `b`; `error_bound == 0` means `point` lies exactly in the
 //!   intersection `a ∩ b`;
@@ -52,7 +54,7 @@
 
 mod clip;
 mod feature;
-mod point_bound;
+pub(super) mod point_bound;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 
@@ -130,14 +132,21 @@ pub fn contact_manifold(
         return Ok(None);
     }
     let n = sd.normal;
-    let fa = feature::support_feature(a, &n);
-    let fb = feature::support_feature(b, &-n);
-    let origin = Point3::from((sd.witness_a.coords + sd.witness_b.coords) * 0.5);
-    let mut pairs: Vec<(clip::Pair, f64)> = clip::contact_pairs(&fa, &fb, &n, origin)
-        .into_iter()
-        .map(|p| (p, (p.b - p.a).dot(&n)))
-        .filter(|(_, d)| *d <= margin)
-        .collect();
+    // A ball's feature is one point, which clips to nothing: its one contact point is the
+    // witness pair, without building the other shape's feature.
+    let ball = matches!(a, Shape::Ball(_)) || matches!(b, Shape::Ball(_));
+    let mut pairs: Vec<(clip::Pair, f64)> = if ball {
+        Vec::with_capacity(1)
+    } else {
+        let fa = feature::support_feature(a, &n);
+        let fb = feature::support_feature(b, &-n);
+        let origin = Point3::from((sd.witness_a.coords + sd.witness_b.coords) * 0.5);
+        clip::contact_pairs(&fa, &fb, &n, origin)
+            .into_iter()
+            .map(|p| (p, (p.b - p.a).dot(&n)))
+            .filter(|(_, d)| *d <= margin)
+            .collect()
+    };
     if pairs.is_empty() {
         let witness = clip::Pair {
             a: sd.witness_a,

@@ -8,6 +8,12 @@
 //! is proved inside the shape, or `q̃` was formed without rounding and equals `p`, the bound is
 //! exactly `0`. It is used only when every nonzero input lies within `2^±250`, so each rounding
 //! is relative.
+//!
+//! A solid hull has no clamp: a point is given `0` when it is proved strictly inside every
+//! boundary triangle's plane (each `orient3d` sign certain under Shewchuk's static error bound);
+//! otherwise, as for a triangle, the point of the boundary triangle it is farthest outside that
+//! lies under it along that triangle's normal, when the projection falls inside the triangle
+//! (barycentric parameters checked exactly; else the exact distance decides).
 
 use crate::query::shapes::rounded_f64::{cross, dot, tame, P3, U};
 use crate::shape::Shape;
@@ -67,8 +73,9 @@ fn gap(p: &P3, q: &P3, exact: bool, err: &P3) -> f64 {
 }
 
 /// A proved upper bound of the distance from `p` to `shape`, or `None` for the shapes it does
-/// not cover (triangles, hulls, cylinders, cones) and for extreme magnitudes.
-pub(super) fn upper_distance(p: &Point3<f64>, shape: &Shape) -> Option<f64> {
+/// not cover (flat hulls, cylinders, cones), for points whose projection misses the triangle
+/// used (triangles, solid hulls) and for extreme magnitudes.
+pub(in crate::query::shapes) fn upper_distance(p: &Point3<f64>, shape: &Shape) -> Option<f64> {
     let p = p3(p);
     if !tame(&p) {
         return None;
@@ -113,12 +120,89 @@ pub(super) fn upper_distance(p: &Point3<f64>, shape: &Shape) -> Option<f64> {
             let len = dot(&n, &n).sqrt() * (1.0 - 8.0 * U);
             Some((high * (1.0 + 4.0 * U) / len * (1.0 + 4.0 * U)).next_up())
         }
+        Shape::ConvexHull(h) if h.dimension() == 3 => {
+            let corners: Vec<P3> = h.corners().iter().map(p3).collect();
+            tame(corners.as_flattened()).then_some(())?;
+            // Inside every plane: 0. Else the point over the plane it is farthest outside.
+            let mut farthest: Option<(f64, [&P3; 3])> = None;
+            for t in h.triangles() {
+                let [a, b, c] = t.map(|i| &corners[i as usize]);
+                if below_plane(a, b, c, &p) {
+                    continue;
+                }
+                let n = cross(&sub(b, a), &sub(c, a));
+                let height = dot(&n, &sub(&p, a)) / dot(&n, &n).sqrt();
+                if farthest.is_none_or(|(best, _)| height > best) {
+                    farthest = Some((height, [a, b, c]));
+                }
+            }
+            match farthest {
+                None => Some(0.0),
+                Some((_, [a, b, c])) => over_triangle(&p, a, b, c),
+            }
+        }
+        Shape::Triangle(t) => {
+            let [a, b, c] = t.vertices();
+            let (a, b, c) = (p3(a), p3(b), p3(c));
+            tame(&[a, b, c].concat()).then_some(())?;
+            over_triangle(&p, &a, &b, &c)
+        }
         _ => None,
     }
 }
 
+fn sub(a: &P3, b: &P3) -> P3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// The distance from `p` to the point of the triangle `abc` under it, when `p`'s projection on
+/// the triangle's plane falls inside the triangle (in `f64`); else `None`. The point is
+/// `a + s (b − a) + t (c − a)` with the rounded `s, t ≥ 0`, `s + t ≤ 1` checked exactly, so it
+/// lies in the triangle; its rounding is bounded as for segments.
+fn over_triangle(p: &P3, a: &P3, b: &P3, c: &P3) -> Option<f64> {
+    let (d1, d2, r) = (sub(b, a), sub(c, a), sub(p, a));
+    let (d11, d12, d22) = (dot(&d1, &d1), dot(&d1, &d2), dot(&d2, &d2));
+    let (r1, r2) = (dot(&r, &d1), dot(&r, &d2));
+    let det = d11 * d22 - d12 * d12;
+    if det.is_nan() || det <= 0.0 {
+        return None;
+    }
+    let s = (d22 * r1 - d12 * r2) / det;
+    let t = (d11 * r2 - d12 * r1) / det;
+    // s + t ≤ 1 exactly: the rounded sum below 1, or equal to 1 with a non-positive error.
+    let sum = s + t;
+    let low_part = (s - (sum - (sum - s))) + (t - (sum - s));
+    let in_triangle = s >= 0.0 && t >= 0.0 && (sum < 1.0 || (sum == 1.0 && low_part <= 0.0));
+    if !in_triangle {
+        return None;
+    }
+    let (q, exact, err) = combine(a, &[(s, d1), (t, d2)]);
+    let err: P3 = core::array::from_fn(|k| err[k] + 2.0 * U * (d1[k].abs() + d2[k].abs()));
+    let exact = exact && sub_exact(a, b, &d1) && sub_exact(a, c, &d2);
+    Some(gap(p, &q, exact, &err))
+}
+
+/// Whether `orient3d(a, b, c, p) = ((b − a) × (c − a)) · (p − a)` is proved negative: `p`
+/// strictly on the inner side of an outward, counter-clockwise boundary triangle. The `f64`
+/// determinant must exceed Shewchuk's bound `(7 + 56ε)ε · permanent` (`ε = 2^-53`), valid
+/// here because tame inputs neither underflow nor overflow.
+fn below_plane(a: &P3, b: &P3, c: &P3, p: &P3) -> bool {
+    const BOUND: f64 = (7.0 + 56.0 * U) * U;
+    let [bx, by, bz] = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let [cx, cy, cz] = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+    let [px, py, pz] = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+    let (bc_xy, cb_xy) = (bx * cy, cx * by);
+    let (cp_xy, pc_xy) = (cx * py, px * cy);
+    let (pb_xy, bp_xy) = (px * by, bx * py);
+    let det = pz * (bc_xy - cb_xy) + bz * (cp_xy - pc_xy) + cz * (pb_xy - bp_xy);
+    let permanent = pz.abs() * (bc_xy.abs() + cb_xy.abs())
+        + bz.abs() * (cp_xy.abs() + pc_xy.abs())
+        + cz.abs() * (pb_xy.abs() + bp_xy.abs());
+    det < -BOUND * permanent
+}
+
 /// The point `a + t (b − a)` nearest `p` (t clamped to `[0, 1]`), minus the radius.
-fn segment(p: &P3, a: &P3, b: &P3, radius: f64) -> Option<f64> {
+pub(in crate::query::shapes) fn segment(p: &P3, a: &P3, b: &P3, radius: f64) -> Option<f64> {
     tame(a).then_some(())?;
     tame(b).then_some(())?;
     tame(&[radius]).then_some(())?;
@@ -148,7 +232,7 @@ fn sub_exact(a: &P3, b: &P3, d: &P3) -> bool {
 
 /// The cuboid `c + Σ t_m axis_m`, `|t_m| ≤ 1`: `0` when `p`'s exact parameters (Cramer's rule)
 /// are proved inside, else the clamped parameters' point.
-fn cuboid(p: &P3, c: &P3, axes: &[P3; 3]) -> Option<f64> {
+pub(in crate::query::shapes) fn cuboid(p: &P3, c: &P3, axes: &[P3; 3]) -> Option<f64> {
     let d = [p[0] - c[0], p[1] - c[1], p[2] - c[2]];
     let d_err: P3 = d.map(|x| x.abs() * U * 1.01);
     let mut params = [0.0; 3];
@@ -190,4 +274,50 @@ fn cuboid(p: &P3, c: &P3, axes: &[P3; 3]) -> Option<f64> {
         ],
     );
     Some(gap(p, &q, exact, &err))
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::Point3;
+    use proptest::prelude::*;
+
+    use super::upper_distance;
+    use crate::query::shapes::{distance, intersects};
+    use crate::shape::{ConvexHull, Shape};
+    use crate::{Ball, Triangle};
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+        /// A point the `f64` test calls inside a solid hull (bound `0`) is in it exactly, any
+        /// other bound of a hull or a triangle is at least the exact distance, and a point
+        /// well inside a hull is called inside.
+        #[test]
+        fn hull_points_proved_inside_are_inside(
+            corners in proptest::collection::vec(proptest::array::uniform3(-1.0f64..1.0), 4..16),
+            probes in proptest::collection::vec(proptest::array::uniform3(-1.0f64..1.0), 32),
+        ) {
+            let hull = ConvexHull::new(corners.iter().map(|p| Point3::from(*p)).collect()).unwrap();
+            prop_assume!(hull.dimension() == 3);
+            let shape = Shape::from(hull.clone());
+            let facet = Shape::from(Triangle::new(
+                Point3::from(corners[0]), Point3::from(corners[1]), Point3::from(corners[2]),
+            ).unwrap());
+            for p in probes.iter().map(|p| Point3::from(*p)) {
+                let point = Shape::from(Ball::new(p, 0.0).unwrap());
+                for target in [&shape, &facet] {
+                    let Some(bound) = upper_distance(&p, target) else { continue };
+                    if bound == 0.0 {
+                        prop_assert!(intersects(&point, target).unwrap(), "{:?}", p);
+                    } else {
+                        let d = distance(&point, target).unwrap();
+                        prop_assert!(d.distance - d.error_bound <= bound, "{:?} {:?} {}", p, d, bound);
+                    }
+                }
+            }
+            // The centroid of the corners is strictly inside and proved so.
+            let n = hull.corners().len() as f64;
+            let centroid = hull.corners().iter().fold(Point3::origin(), |s, c| s + c.coords / n);
+            prop_assert_eq!(upper_distance(&centroid, &shape), Some(0.0));
+        }
+    }
 }
