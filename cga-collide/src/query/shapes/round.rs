@@ -21,8 +21,9 @@
 //! around the filter's search ([`bounded_distance`]): a separating direction bounds the
 //! distance below, two witness points proved inside the bodies bound it above, and a proved
 //! common point makes it exactly `0`. Those bounds are as tight as the search converges
-//! (`1e-12` to a few `1e-8` of the sizes involved on the tests' random pairs); touching pairs get `[0, u]` with
-//! `u` about `2^-44` of the sizes.
+//! (from `1e-12` to `1e-4` of the sizes involved on the tests' pairs: a search between two
+//! curved bodies, or along a flush face, converges slowly); touching pairs get an interval
+//! from `0`.
 //!
 //! Shapes that collapse (a zero radius, a capsule with equal ends, a polytope of one point) are
 //! replaced by the segment or point they are, so more pairs answer exactly.

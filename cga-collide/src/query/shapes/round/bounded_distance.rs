@@ -67,7 +67,7 @@ pub(super) fn distance(a: &Shape, b: &Shape) -> Option<CertifiedDistance> {
         .filter(|d| d.iter().any(|x| *x != 0.0))
         .map(|d| lower_bound(&ba, &bb, d))
         .fold(0.0, f64::max);
-    if !(lower <= upper) {
+    if lower.is_nan() || upper.is_nan() || lower > upper {
         return None;
     }
     // Back to the input's units: `scale` is a power of two, so only results below the
@@ -113,7 +113,7 @@ fn unscaled(x: &P3, scale: f64) -> Option<Point3<f64>> {
 fn lower_bound(a: &Body, b: &Body, v: &P3) -> f64 {
     let low_a = a.support_value(&v.map(|x| -x)).neg();
     let gap = low_a.sub(b.support_value(v));
-    if !(gap.lo > 0.0) {
+    if gap.lo.is_nan() || gap.lo <= 0.0 {
         return 0.0;
     }
     let length = norm2(&lift(v)).sqrt();
