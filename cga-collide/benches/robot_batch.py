@@ -20,7 +20,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--configs", type=int, default=100_000)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--robots", default="panda,ur5,iiwa")
+    ap.add_argument("--robots", default="panda,panda_primitives,ur5,iiwa")
     # Against the environment a link near the cylinder costs milliseconds (the exact
     # triangle-cylinder test): "both" may be given fewer configurations.
     ap.add_argument("--against", default="self,both")

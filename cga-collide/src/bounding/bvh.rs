@@ -197,6 +197,26 @@ impl Bvh {
         ControlFlow::Continue(())
     }
 
+    /// [`for_each_candidate`](Self::for_each_candidate) for a nearest-pair search: nodes in
+    /// increasing order of `gap` (a lower bound on the distance from the box to what is
+    /// searched for), and none whose gap exceeds `bound()`, read again before each node and
+    /// triangle (the search lowers it as it finds nearer triangles). Visiting the nearest
+    /// first lowers the bound early, so far fewer triangles are examined than depth first.
+    pub(crate) fn for_each_nearest_first<B>(
+        &self,
+        gap: impl Fn(&Aabb) -> f64,
+        bound: impl Fn() -> f64,
+        mut visit: impl FnMut(u32) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        nearest_first(
+            &self.nodes,
+            |node| gap(&node.bounds),
+            bound,
+            |k| (gap(&self.boxes[k]), self.order[k]),
+            |_, i| visit(i),
+        )
+    }
+
     /// Calls `visit(i, j)` for every pair of a triangle `i` of `self` and `j` of `other` whose
     /// boxes overlap (exactly those pairs: see the module docs); stops early when `visit` breaks.
     /// Both hierarchies must be in the same frame (transform and [`refit`](Self::refit) first).
@@ -435,4 +455,47 @@ mod tests {
             }
         }
     }
+}
+
+/// The best-first traversal behind [`Bvh::for_each_nearest_first`] and its posed twin: a heap
+/// of nodes keyed by `node_gap`, popped nearest first until the nearest left exceeds `bound()`;
+/// at a leaf, every position `k` with `leaf_item(k) = (gap, item)` within the bound is visited.
+pub(crate) fn nearest_first<T, B>(
+    nodes: &[BvhNode],
+    node_gap: impl Fn(&BvhNode) -> f64,
+    bound: impl Fn() -> f64,
+    leaf_item: impl Fn(usize) -> (f64, T),
+    mut visit: impl FnMut(usize, T) -> ControlFlow<B>,
+) -> ControlFlow<B> {
+    use std::cmp::Reverse;
+    if nodes.is_empty() {
+        return ControlFlow::Continue(());
+    }
+    // Gaps are never negative nor NaN (lower bounds of distances), so their bit patterns
+    // order like the values.
+    let mut heap = std::collections::BinaryHeap::with_capacity(64);
+    heap.push(Reverse((node_gap(&nodes[0]).max(0.0).to_bits(), 0usize)));
+    while let Some(Reverse((g, i))) = heap.pop() {
+        if f64::from_bits(g) > bound() {
+            break; // every node left is at least as far
+        }
+        let node = &nodes[i];
+        let s = node.start as usize;
+        if node.is_leaf() {
+            for k in s..s + node.count as usize {
+                let (g, item) = leaf_item(k);
+                if g <= bound() {
+                    visit(k, item)?;
+                }
+            }
+        } else {
+            for c in [s, s + 1] {
+                let g = node_gap(&nodes[c]);
+                if g <= bound() {
+                    heap.push(Reverse((g.max(0.0).to_bits(), c)));
+                }
+            }
+        }
+    }
+    ControlFlow::Continue(())
 }

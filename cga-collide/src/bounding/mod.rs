@@ -30,5 +30,6 @@ pub(crate) mod shape_box;
 pub use aabb::{triangle_box, Aabb};
 pub(crate) use box_distance::{box_distance2, boxes_within};
 pub use build::BuildStrategy;
+pub(crate) use bvh::nearest_first;
 pub use bvh::Bvh;
 pub use node::{BvhNode, MAX_LEAF};

@@ -660,6 +660,29 @@ impl Collider {
         }
         ControlFlow::Continue(())
     }
+
+    /// [`posed_candidates`](Self::posed_candidates) nearest first (see
+    /// [`Bvh::for_each_nearest_first`]): nodes by the `gap` of their world boxes, triangles by
+    /// that of their placed boxes, none beyond `bound()`.
+    pub(super) fn posed_nearest_first<B>(
+        &self,
+        world: &WorldBoxes,
+        pose: &Isometry3<f64>,
+        gap: impl Fn(&Aabb) -> f64,
+        bound: impl Fn() -> f64,
+        mut visit: impl FnMut(&Placed) -> ControlFlow<B>,
+    ) -> ControlFlow<B> {
+        crate::bounding::nearest_first(
+            self.bvh().nodes(),
+            |node| gap(&world.world(&node.bounds)),
+            bound,
+            |k| {
+                let placed = place(self.pose_tree(), k, pose);
+                (gap(&placed.bounds), placed)
+            },
+            |_, placed| visit(&placed),
+        )
+    }
 }
 
 #[cfg(test)]

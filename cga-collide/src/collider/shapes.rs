@@ -298,9 +298,11 @@ impl Collider {
         // The least proved lower bound over the triangles examined.
         let mut lower = f64::INFINITY;
         let mut best: Option<(u32, CertifiedDistance)> = None;
-        let flow = self.shape_candidates(
+        // Nearest first: the bound falls early, so few triangles are measured.
+        let flow = self.shape_candidates_nearest_first(
             frame,
-            |b| reach.within(b, bound.get()),
+            |b| reach.gap(b),
+            || bound.get(),
             |i, t| match query::distance(&as_shape(t), shape) {
                 Ok(d) => {
                     lower = lower.min((d.distance - d.error_bound).next_down().max(0.0));
@@ -361,6 +363,29 @@ impl Collider {
             });
         }
         Ok(Reach::of(shape))
+    }
+
+    /// [`shape_candidates`](Self::shape_candidates) for a nearest-triangle search: nodes and
+    /// triangles in increasing order of `gap` (a lower bound on their distance to the shape),
+    /// none whose gap exceeds `bound()`, read again before each (the search lowers it).
+    fn shape_candidates_nearest_first<B>(
+        &self,
+        frame: Frame,
+        gap: impl Fn(&Aabb) -> f64,
+        bound: impl Fn() -> f64,
+        mut visit: impl FnMut(u32, &Triangle) -> ControlFlow<B>,
+    ) -> Result<ControlFlow<B>, Error> {
+        match (frame, self.mode()) {
+            (Frame::Own, Mode::Bvh) => Ok(self
+                .bvh()
+                .for_each_nearest_first(gap, bound, |i| visit(i, &self.triangle(i)))),
+            (Frame::Posed(pose), Mode::Bvh) => {
+                let world = self.world_boxes(pose)?;
+                Ok(self.posed_nearest_first(&world, pose, gap, bound, |p| visit(p.index, &p.tri)))
+            }
+            // No tree: every triangle, as the depth-first walk takes them.
+            (_, Mode::Brute) => self.shape_candidates(frame, |b| gap(b) <= bound(), visit),
+        }
     }
 
     /// Calls `visit` with every triangle (its index and itself, in the frame) whose box passes

@@ -361,31 +361,36 @@ impl PairTest<'_> {
 impl PairTest<'_> {
     /// Their certified distance (as [`distance`](Self::distance)) when they are nearer than
     /// `cutoff`; otherwise a proved lower bound on it. Meshes search with the cutoff from the
-    /// start (nothing proved farther is examined); a pair with a cylinder or a cone, which has
-    /// no certified distance yet, is first asked the exact clearance question, so that one
-    /// farther than `cutoff` is answered.
+    /// start (nothing proved farther is examined); two primitives are first asked the exact
+    /// clearance question, so that a pair farther than `cutoff` is answered without a distance.
     pub fn distance_below(&self, cutoff: f64) -> Result<Bounded, Error> {
         if cutoff.is_infinite() {
             return self.distance().map(Bounded::Below);
         }
         let ((ga, pa), (gb, pb)) = (self.a, self.b);
-        let measurable = |s: &Shape| !matches!(s, Shape::Cylinder(_) | Shape::Cone(_));
         let id = Isometry3::identity();
         match (ga, gb, &pa.shape, &pb.shape) {
             (Geometry::Mesh(a), Geometry::Mesh(b), _, _) => {
                 a.distance_below_at(&pa.pose, b, &pb.pose, cutoff)
             }
-            (Geometry::Mesh(m), _, _, Some(s)) if measurable(s) => {
+            (Geometry::Mesh(m), _, _, Some(s)) => {
                 m.distance_to_shape_below_at(&pa.pose, &s.placed(&id)?, cutoff)
             }
-            (_, Geometry::Mesh(m), Some(s), _) if measurable(s) => Ok(
+            (_, Geometry::Mesh(m), Some(s), _) => Ok(
                 match m.distance_to_shape_below_at(&pb.pose, &s.placed(&id)?, cutoff)? {
                     Bounded::Below(d) => Bounded::Below(swapped(d)),
                     at_least => at_least,
                 },
             ),
-            _ if !self.within(cutoff)? => Ok(Bounded::AtLeast(cutoff)),
-            _ => self.distance().map(Bounded::Below),
+            // A clearance the exact tests cannot decide yet (a cylinder or cone near the
+            // cutoff) leaves the answer to the certified distance.
+            _ => match self.within(cutoff) {
+                Ok(false) => Ok(Bounded::AtLeast(cutoff)),
+                Ok(true) | Err(Error::UnsupportedPair { .. }) => {
+                    self.distance().map(Bounded::Below)
+                }
+                Err(e) => Err(e),
+            },
         }
     }
 }

@@ -279,3 +279,112 @@ fn errors_name_the_file_line_and_element() {
         .to_string()
         .starts_with("x.srdf:2: <disable_collisions>"));
 }
+
+/// Every link × environment object pair, decided on every part without spheres or boxes.
+fn brute_environment(robot: &Robot, q: &[f64]) -> Vec<(String, String)> {
+    let posed = robot.pose_parts(q).unwrap();
+    let mut out = Vec::new();
+    for (a, parts) in robot.link_parts.iter().enumerate() {
+        for obj in &robot.environment {
+            let hit = parts.clone().any(|i| {
+                PairTest {
+                    a: (&robot.parts[i].geometry, &posed.parts[i]),
+                    b: (&obj.geometry, &obj.placed),
+                    solid: robot.solid,
+                }
+                .touches()
+                .unwrap()
+            });
+            if hit {
+                let env = format!("env:{}", obj.id.index());
+                let link = robot.link_names[a].clone();
+                out.push(if link <= env {
+                    (link, env)
+                } else {
+                    (env, link)
+                });
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Configurations a hair from a first contact: a free and a colliding configuration, the
+/// segment between them halved 60 times, both ends of the last step kept (the free one
+/// within about `1e-18` of the joint ranges of the colliding one). There the spheres and
+/// boxes in front of the exact tests decide nothing, so the answers must equal the exact
+/// test of every placed part pair; self and against an environment with a cylinder, a cone
+/// and a box.
+#[test]
+fn near_contact_answers_equal_the_exact_test_of_every_placed_pair() {
+    let mut robot = arm();
+    let mut scene = Scene::new();
+    let objects: [Shape; 3] = [
+        crate::shape::Cylinder::new(
+            Point3::new(0.3, -0.2, 0.6),
+            Point3::new(0.3, 0.2, 0.6),
+            0.05,
+        )
+        .unwrap()
+        .into(),
+        crate::shape::Cone::new(
+            Point3::new(-0.3, 0.0, 1.0),
+            Point3::new(-0.3, 0.0, 0.7),
+            0.1,
+        )
+        .unwrap()
+        .into(),
+        crate::shape::Cuboid::axis_aligned(
+            Point3::new(0.0, 0.4, 0.8),
+            Vector3::new(0.1, 0.05, 0.1),
+        )
+        .unwrap()
+        .into(),
+    ];
+    for s in objects {
+        scene.add_shape(s, Isometry3::identity()).unwrap();
+    }
+    robot.set_environment(&scene).unwrap();
+    let mut checked = 0;
+    for against in [Against::Itself, Against::Environment] {
+        let qs = configs(400);
+        let (hit, free): (Vec<_>, Vec<_>) =
+            qs.iter().partition(|q| robot.collides(q, against).unwrap());
+        assert!(
+            hit.len() >= 20 && free.len() >= 20,
+            "{against:?}: {} collide",
+            hit.len()
+        );
+        for (f, h) in free.iter().zip(&hit).take(20) {
+            let at = |t: f64| -> Vec<f64> {
+                f.iter()
+                    .zip(h.iter())
+                    .map(|(a, b)| a + t * (b - a))
+                    .collect()
+            };
+            let (mut lo, mut hi) = (0.0, 1.0);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if robot.collides(&at(mid), against).unwrap() {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            for q in [at(lo), at(hi)] {
+                let exact = match against {
+                    Against::Itself => brute(&robot, &q, None),
+                    _ => brute_environment(&robot, &q),
+                };
+                assert_eq!(
+                    robot.colliding_pairs(&q, against).unwrap(),
+                    exact,
+                    "{against:?} q = {q:?}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 80);
+}

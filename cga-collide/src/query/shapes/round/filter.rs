@@ -26,7 +26,7 @@ const MAX_STEPS: usize = 64;
 const MAX_SHRINKS: usize = 6;
 
 /// A power of two `s` with `s · magnitude` in `[1, 2)` (clamped to the normal range).
-fn unit_scale(magnitude: f64) -> f64 {
+pub(super) fn unit_scale(magnitude: f64) -> f64 {
     if magnitude == 0.0 || !magnitude.is_finite() {
         return 1.0;
     }
@@ -71,7 +71,7 @@ fn apart(a: &Body, b: &Body, d: &P3, c: f64) -> bool {
 }
 
 /// A common point, found by shrunk searches and proved.
-fn meets(a: &Body, b: &Body) -> bool {
+pub(super) fn meets(a: &Body, b: &Body) -> bool {
     let (ka, kb) = (a.max_shrink(), b.max_shrink());
     let shrinkable = ka + kb > 0.0;
     if !shrinkable {
@@ -153,24 +153,24 @@ fn common_point(a: &Body, b: &Body, found: &Found) -> bool {
 
 /// One point of the difference `A − B` and the support points it came from.
 #[derive(Clone, Copy, Debug, Default)]
-struct Vertex {
+pub(super) struct Vertex {
     w: P3,
-    a: P3,
-    index_a: usize,
-    b: P3,
-    index_b: usize,
+    pub(super) a: P3,
+    pub(super) index_a: usize,
+    pub(super) b: P3,
+    pub(super) index_b: usize,
 }
 
 /// The search's end: the nearest point `v` of the difference of the last simplex, its squared
 /// norm (`0`: the simplex holds the origin), the simplex with its weights, and `lower`, the
 /// last `v·w` (with exact supports, every point `x` of the difference has `v·x ≥ lower`).
-struct Found {
-    v: P3,
-    norm2: f64,
+pub(super) struct Found {
+    pub(super) v: P3,
+    pub(super) norm2: f64,
     lower: f64,
-    vertices: [Vertex; 4],
-    weights: [f64; 4],
-    len: usize,
+    pub(super) vertices: [Vertex; 4],
+    pub(super) weights: [f64; 4],
+    pub(super) len: usize,
 }
 
 fn vertex(a: &Body, sa: f64, b: &Body, sb: f64, d: &P3) -> Vertex {
@@ -188,7 +188,13 @@ fn vertex(a: &Body, sa: f64, b: &Body, sb: f64, d: &P3) -> Vertex {
 /// The `f64` search for the point of `A_sa − B_sb` nearest the origin. It stops early once
 /// `v` separates with some margin (`v·w ≥ v·v / 2` and `v·w > c·|v|`): the proof needs
 /// no more.
-fn search(a: &Body, sa: f64, b: &Body, sb: f64, c: f64) -> Found {
+pub(super) fn search(a: &Body, sa: f64, b: &Body, sb: f64, c: f64) -> Found {
+    search_steps(a, sa, b, sb, c, MAX_STEPS)
+}
+
+/// [`search`] with at most `steps` steps (curved bodies converge linearly: a distance wants
+/// more than a yes/no proof does).
+pub(super) fn search_steps(a: &Body, sa: f64, b: &Body, sb: f64, c: f64, steps: usize) -> Found {
     let (p0, _) = a.support(&[1.0, 0.0, 0.0], sa);
     let (q0, _) = b.support(&[-1.0, 0.0, 0.0], sb);
     let start = vertex(a, sa, b, sb, &sub(&p0, &q0));
@@ -200,7 +206,7 @@ fn search(a: &Body, sa: f64, b: &Body, sb: f64, c: f64) -> Found {
         weights: [1.0, 0.0, 0.0, 0.0],
         len: 1,
     };
-    for _ in 0..MAX_STEPS {
+    for _ in 0..steps {
         let points: [P3; 4] = core::array::from_fn(|i| found.vertices[i].w);
         let nearest = nearest_to_origin(&points[..found.len]);
         let mut kept = 0;

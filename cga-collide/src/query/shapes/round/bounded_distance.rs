@@ -1,0 +1,199 @@
+//! A certified distance for the pairs with a cylinder or a cone that have no exact distance
+//! method (against a triangle, cuboid, hull, cylinder or cone), proved in interval arithmetic
+//! around the `f64` search of the [filter](super::filter).
+//!
+//! * **Lower bound.** The search converged on the nearest point `v` of the difference
+//!   `A − B`; along `v`, the support functions bounded outward give
+//!   `min_A v·x − max_B v·y ≥ g`, so every point of `A` is at least `g / |v|` from every point
+//!   of `B` (when `g > 0`; otherwise the lower bound is `0`). Along the true nearest direction
+//!   this is the distance itself, so a converged search makes it tight.
+//! * **Upper bound.** The same search on both bodies shrunk by a tiny depth gives witness
+//!   points as convex combinations of support points; each is proved inside its (unshrunk)
+//!   body: a polytope's as the exact combination of its vertices held in an interval box, a
+//!   cylinder's, cone's, ball's or capsule's by the slab and radial bounds. The distance is at
+//!   most the largest distance between the two boxes.
+//! * **Meeting.** When the search reaches the origin, a common point proved inside both (the
+//!   filter's shrunk searches) gives the distance `0` exactly.
+//!
+//! The answer is the middle of `[lower, upper]` with half its width as the error bound, so
+//! the true distance lies within `distance ± error_bound`; the witnesses are the proved
+//! points. Nothing proved (magnitudes out of the range the scaling keeps exact, degenerate
+//! bodies whose shrinking fails) is `None`, and the caller refuses the pair.
+
+use nalgebra::Point3;
+
+use super::body::{magnitude, Body, P3};
+use super::filter::{meets, search, search_steps, unit_scale, Found};
+use super::interval::{lift, norm2, sub3, Iv, IvP3};
+use crate::query::CertifiedDistance;
+use crate::shape::Shape;
+
+/// Depths (fractions of each body's largest shrink) tried for the witness search: the first
+/// whose witnesses are proved inside decides; smaller is tighter.
+const SHRINK_FRACTIONS: [f64; 3] = [1.0 / (1u64 << 44) as f64, 1.0 / (1u64 << 34) as f64, 1e-6];
+
+/// Search steps for a distance: two curved bodies converge linearly, and the bounds are as
+/// tight as the search is converged.
+const STEPS: usize = 1024;
+
+/// The certified distance between two bounded shapes, one of them a cylinder or cone (any
+/// pair the filter's bodies hold: not a half-space).
+pub(super) fn distance(a: &Shape, b: &Shape) -> Option<CertifiedDistance> {
+    let scale = unit_scale(magnitude(a).max(magnitude(b)));
+    let (ba, bb) = (body(a, scale)?, body(b, scale)?);
+    let found = search_steps(&ba, 0.0, &bb, 0.0, f64::INFINITY, STEPS);
+    if !found.norm2.is_finite() {
+        return None;
+    }
+    if found.norm2 == 0.0 || found.norm2.sqrt() <= 1e-3 * ba.max_shrink().max(bb.max_shrink()) {
+        if let Some(x) = common_point(&ba, &bb) {
+            let p = unscaled(&x, scale)?;
+            return Some(CertifiedDistance {
+                distance: 0.0,
+                error_bound: 0.0,
+                witness_a: p,
+                witness_b: p,
+                triangles: None,
+            });
+        }
+    }
+    let (upper, xa, xb) = upper_bound(&ba, &bb)?;
+    // Along the search's direction, and along the witnesses' (often the better one: a
+    // search whose support points repeat, as a cone's apex and rim do, stops on a direction
+    // a little off, and the gap along it is short by the square of that angle).
+    let between: P3 = core::array::from_fn(|k| xa[k] - xb[k]);
+    let lower = [found.v, between]
+        .iter()
+        .filter(|d| d.iter().any(|x| *x != 0.0))
+        .map(|d| lower_bound(&ba, &bb, d))
+        .fold(0.0, f64::max);
+    if lower.is_nan() || upper.is_nan() || lower > upper {
+        return None;
+    }
+    // Back to the input's units: `scale` is a power of two, so only results below the
+    // normal range round, and they are moved outwards.
+    let (lower, upper) = (
+        (lower / scale).next_down().max(0.0),
+        (upper / scale).next_up(),
+    );
+    let distance = 0.5 * lower + 0.5 * upper;
+    let error_bound = (upper - distance).max(distance - lower).next_up();
+    if !(distance.is_finite() && error_bound.is_finite()) {
+        return None;
+    }
+    Some(CertifiedDistance {
+        distance,
+        error_bound,
+        witness_a: unscaled(&xa, scale)?,
+        witness_b: unscaled(&xb, scale)?,
+        triangles: None,
+    })
+}
+
+/// The filter's body of a shape; a cylinder or cone of radius `0` is its axis segment.
+fn body(s: &Shape, scale: f64) -> Option<Body> {
+    let axis = |p: &Point3<f64>, q: &Point3<f64>| {
+        crate::shape::Segment::new(*p, *q)
+            .ok()
+            .and_then(|g| Body::new(&Shape::Segment(g), scale))
+    };
+    match s {
+        Shape::Cylinder(c) if c.radius() == 0.0 => axis(c.a(), c.b()),
+        Shape::Cone(c) if c.radius() == 0.0 => axis(c.apex(), c.base()),
+        _ => Body::new(s, scale),
+    }
+}
+
+fn unscaled(x: &P3, scale: f64) -> Option<Point3<f64>> {
+    let p = Point3::new(x[0] / scale, x[1] / scale, x[2] / scale);
+    p.iter().all(|v| v.is_finite()).then_some(p)
+}
+
+/// `(min_A v·x − max_B v·y) / |v|` rounded down, or `0` when not positive.
+fn lower_bound(a: &Body, b: &Body, v: &P3) -> f64 {
+    let low_a = a.support_value(&v.map(|x| -x)).neg();
+    let gap = low_a.sub(b.support_value(v));
+    if gap.lo.is_nan() || gap.lo <= 0.0 {
+        return 0.0;
+    }
+    let length = norm2(&lift(v)).sqrt();
+    let lower = gap.div_positive(length).lo;
+    if lower.is_finite() {
+        lower.max(0.0)
+    } else {
+        0.0
+    }
+}
+
+/// A proved upper bound on the distance and the two witness points (box middles), from a
+/// search on the slightly shrunk bodies.
+fn upper_bound(a: &Body, b: &Body) -> Option<(f64, P3, P3)> {
+    let (ka, kb) = (a.max_shrink(), b.max_shrink());
+    for f in SHRINK_FRACTIONS {
+        let found = search_steps(a, f * ka, b, f * kb, f64::INFINITY, STEPS);
+        let (Some(xa), Some(xb)) = (witness(a, &found, true), witness(b, &found, false)) else {
+            continue;
+        };
+        let reach = norm2(&sub3(&xa, &xb)).sqrt().hi;
+        if reach.is_finite() {
+            return Some((reach, middle(&xa), middle(&xb)));
+        }
+    }
+    None
+}
+
+fn middle(x: &IvP3) -> P3 {
+    x.map(|c| 0.5 * c.lo + 0.5 * c.hi)
+}
+
+/// The search's point of `A` (`of_a`) or of `B` as an interval box proved inside the body.
+fn witness(body: &Body, found: &Found, of_a: bool) -> Option<IvP3> {
+    let vertices = &found.vertices[..found.len];
+    let weights: Vec<f64> = found.weights[..found.len]
+        .iter()
+        .map(|w| w.max(0.0))
+        .collect();
+    let total: f64 = weights.iter().sum();
+    if !(total > 0.0 && total.is_finite()) {
+        return None;
+    }
+    if let Body::Points(_, boxes) = body {
+        // The exact combination of the vertices divided by the exact sum: in the hull.
+        let mut sum = [Iv::point(0.0); 3];
+        let mut weight = Iv::point(0.0);
+        for (v, &w) in vertices.iter().zip(&weights) {
+            let p = &boxes[if of_a { v.index_a } else { v.index_b }];
+            sum = core::array::from_fn(|k| sum[k].add(Iv::point(w).mul(p[k])));
+            weight = weight.add(Iv::point(w));
+        }
+        return Some(sum.map(|s| s.div_positive(weight)));
+    }
+    let mut x = [0.0; 3];
+    for (v, &w) in vertices.iter().zip(&weights) {
+        let p = if of_a { v.a } else { v.b };
+        for (xk, pk) in x.iter_mut().zip(p) {
+            *xk += w / total * pk;
+        }
+    }
+    let x = lift(&x);
+    body.holds(&x).then_some(x)
+}
+
+/// A point common to both bodies, proved to exist (the filter's shrunk searches); the point
+/// reported is the `f64` middle of the deepest search's two witnesses.
+fn common_point(a: &Body, b: &Body) -> Option<P3> {
+    if !meets(a, b) {
+        return None;
+    }
+    let (ka, kb) = (a.max_shrink(), b.max_shrink());
+    let found = search(a, 0.25 * ka, b, 0.25 * kb, 0.0);
+    let weights = &found.weights[..found.len];
+    let total: f64 = weights.iter().map(|w| w.max(0.0)).sum();
+    let mut x = [0.0; 3];
+    for (v, &w) in found.vertices[..found.len].iter().zip(weights) {
+        for (k, xk) in x.iter_mut().enumerate() {
+            *xk += w.max(0.0) / total * 0.5 * (v.a[k] + v.b[k]);
+        }
+    }
+    x.iter().all(|c| c.is_finite()).then_some(x)
+}
