@@ -335,6 +335,49 @@ impl Bvh {
     }
 }
 
+/// The best-first traversal behind [`Bvh::for_each_nearest_first`] and its posed twin: a heap
+/// of nodes keyed by `node_gap`, popped nearest first until the nearest left exceeds `bound()`;
+/// at a leaf, every position `k` with `leaf_item(k) = (gap, item)` within the bound is visited.
+pub(crate) fn nearest_first<T, B>(
+    nodes: &[BvhNode],
+    node_gap: impl Fn(&BvhNode) -> f64,
+    bound: impl Fn() -> f64,
+    leaf_item: impl Fn(usize) -> (f64, T),
+    mut visit: impl FnMut(usize, T) -> ControlFlow<B>,
+) -> ControlFlow<B> {
+    use std::cmp::Reverse;
+    if nodes.is_empty() {
+        return ControlFlow::Continue(());
+    }
+    // Gaps are never negative nor NaN (lower bounds of distances), so their bit patterns
+    // order like the values.
+    let mut heap = std::collections::BinaryHeap::with_capacity(64);
+    heap.push(Reverse((node_gap(&nodes[0]).max(0.0).to_bits(), 0usize)));
+    while let Some(Reverse((g, i))) = heap.pop() {
+        if f64::from_bits(g) > bound() {
+            break; // every node left is at least as far
+        }
+        let node = &nodes[i];
+        let s = node.start as usize;
+        if node.is_leaf() {
+            for k in s..s + node.count as usize {
+                let (g, item) = leaf_item(k);
+                if g <= bound() {
+                    visit(k, item)?;
+                }
+            }
+        } else {
+            for c in [s, s + 1] {
+                let g = node_gap(&nodes[c]);
+                if g <= bound() {
+                    heap.push(Reverse((g.max(0.0).to_bits(), c)));
+                }
+            }
+        }
+    }
+    ControlFlow::Continue(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -455,47 +498,4 @@ mod tests {
             }
         }
     }
-}
-
-/// The best-first traversal behind [`Bvh::for_each_nearest_first`] and its posed twin: a heap
-/// of nodes keyed by `node_gap`, popped nearest first until the nearest left exceeds `bound()`;
-/// at a leaf, every position `k` with `leaf_item(k) = (gap, item)` within the bound is visited.
-pub(crate) fn nearest_first<T, B>(
-    nodes: &[BvhNode],
-    node_gap: impl Fn(&BvhNode) -> f64,
-    bound: impl Fn() -> f64,
-    leaf_item: impl Fn(usize) -> (f64, T),
-    mut visit: impl FnMut(usize, T) -> ControlFlow<B>,
-) -> ControlFlow<B> {
-    use std::cmp::Reverse;
-    if nodes.is_empty() {
-        return ControlFlow::Continue(());
-    }
-    // Gaps are never negative nor NaN (lower bounds of distances), so their bit patterns
-    // order like the values.
-    let mut heap = std::collections::BinaryHeap::with_capacity(64);
-    heap.push(Reverse((node_gap(&nodes[0]).max(0.0).to_bits(), 0usize)));
-    while let Some(Reverse((g, i))) = heap.pop() {
-        if f64::from_bits(g) > bound() {
-            break; // every node left is at least as far
-        }
-        let node = &nodes[i];
-        let s = node.start as usize;
-        if node.is_leaf() {
-            for k in s..s + node.count as usize {
-                let (g, item) = leaf_item(k);
-                if g <= bound() {
-                    visit(k, item)?;
-                }
-            }
-        } else {
-            for c in [s, s + 1] {
-                let g = node_gap(&nodes[c]);
-                if g <= bound() {
-                    heap.push(Reverse((g.max(0.0).to_bits(), c)));
-                }
-            }
-        }
-    }
-    ControlFlow::Continue(())
 }
