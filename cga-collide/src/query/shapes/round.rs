@@ -38,7 +38,7 @@ mod filter;
 #[cfg(test)]
 mod filter_tests;
 mod half_space;
-mod interval;
+pub(super) mod interval;
 mod meridian;
 mod planar;
 mod section;
@@ -47,6 +47,8 @@ mod surd;
 mod univariate;
 
 use exact3::{add, point, q, sub, Round, V3};
+/// The filter's support functions of cylinders and cones, which the depth search also bounds.
+pub(super) use body::Body;
 
 fn unsupported(query: &'static str, a: &Shape, b: &Shape) -> Error {
     Error::UnsupportedPair {
