@@ -498,16 +498,28 @@ mod tests {
                 let mesh = two_walls(near_first).with_mode(mode);
                 // One proved, one refused: proved, whichever comes first.
                 let near_holds = |t: &Triangle| if is_near(t) { Ok(true) } else { Err(refusal()) };
-                assert!(mesh.any_triangle(Frame::Own, everything, near_holds).unwrap());
+                assert!(mesh
+                    .any_triangle(Frame::Own, everything, near_holds)
+                    .unwrap());
                 let far_holds = |t: &Triangle| if is_near(t) { Err(refusal()) } else { Ok(true) };
-                assert!(mesh.any_triangle(Frame::Own, everything, far_holds).unwrap());
+                assert!(mesh
+                    .any_triangle(Frame::Own, everything, far_holds)
+                    .unwrap());
                 // One proved false, one refused: refused.
-                let unknown = |t: &Triangle| if is_near(t) { Ok(false) } else { Err(refusal()) };
+                let unknown = |t: &Triangle| {
+                    if is_near(t) {
+                        Ok(false)
+                    } else {
+                        Err(refusal())
+                    }
+                };
                 assert!(matches!(
                     mesh.any_triangle(Frame::Own, everything, unknown),
                     Err(Error::UnsupportedPair { .. })
                 ));
-                assert!(!mesh.any_triangle(Frame::Own, everything, |_| Ok(false)).unwrap());
+                assert!(!mesh
+                    .any_triangle(Frame::Own, everything, |_| Ok(false))
+                    .unwrap());
                 // Other errors stop the search.
                 let broken = |t: &Triangle| {
                     if is_near(t) {
@@ -517,7 +529,10 @@ mod tests {
                     }
                 };
                 let got = mesh.any_triangle(Frame::Own, everything, broken);
-                assert!(matches!(got, Ok(true) | Err(Error::InvalidClearance { .. })));
+                assert!(matches!(
+                    got,
+                    Ok(true) | Err(Error::InvalidClearance { .. })
+                ));
                 if matches!(mode, Mode::Brute) {
                     // Brute force visits the triangles in order.
                     assert_eq!(got.is_ok(), near_first);
@@ -546,7 +561,8 @@ mod tests {
                 assert_eq!(d.triangles, Some((near_index, 0)));
                 assert!((d.distance - 0.5).abs() <= d.error_bound);
                 // The near wall refused: the far one cannot stand for it.
-                let near_refused = |t: &Triangle| if is_near(t) { Err(refusal()) } else { exact(t) };
+                let near_refused =
+                    |t: &Triangle| if is_near(t) { Err(refusal()) } else { exact(t) };
                 assert!(matches!(
                     mesh.nearest_triangle(Frame::Own, &reach, f64::INFINITY, near_refused),
                     Err(Error::UnsupportedPair { .. })

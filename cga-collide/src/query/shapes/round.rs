@@ -46,9 +46,9 @@ mod segment;
 mod surd;
 mod univariate;
 
-use exact3::{add, point, q, sub, Round, V3};
 /// The filter's support functions of cylinders and cones, which the depth search also bounds.
 pub(super) use body::Body;
+use exact3::{add, point, q, sub, Round, V3};
 
 fn unsupported(query: &'static str, a: &Shape, b: &Shape) -> Error {
     Error::UnsupportedPair {

@@ -17,9 +17,9 @@ use nalgebra::{Point3, Vector3};
 use num_traits::Signed;
 
 use super::polytope::Core;
+use crate::exact::vector::{cross, dot, sub};
 use crate::query::shapes::round::interval::{dot3, lift, norm2, Iv, WHOLE};
 use crate::query::shapes::round::Body as Filtered;
-use crate::exact::vector::{cross, dot, sub};
 use crate::shape::{Segment, Shape};
 
 pub(super) type P3 = [f64; 3];
