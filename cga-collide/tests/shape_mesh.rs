@@ -4,7 +4,7 @@
 use cga_collide::collider::{Collider, Mode};
 use cga_collide::nalgebra::{Isometry3, Point3, Vector3};
 use cga_collide::query;
-use cga_collide::shape::{Cuboid, HalfSpace, Shape};
+use cga_collide::shape::{Cone, Cuboid, Cylinder, HalfSpace, Shape};
 use cga_collide::{Ball, Error, Segment, TriMesh, Triangle};
 use proptest::prelude::*;
 
@@ -22,6 +22,16 @@ fn shape() -> impl Strategy<Value = Shape> {
     ]
 }
 
+/// The triangles of `faces` (indices taken modulo the number of vertices).
+fn soup((vertices, faces): (Vec<Point3<f64>>, Vec<(usize, usize, usize)>)) -> TriMesh {
+    let n = vertices.len();
+    let triangles = faces
+        .into_iter()
+        .map(|(a, b, c)| [(a % n) as u32, (b % n) as u32, (c % n) as u32])
+        .collect();
+    TriMesh::new(vertices, triangles).unwrap()
+}
+
 /// A soup of small triangles (up to 48, so both the lazily and the eagerly built trees are
 /// met), some sharing vertices, or a box.
 fn mesh() -> impl Strategy<Value = TriMesh> {
@@ -30,14 +40,7 @@ fn mesh() -> impl Strategy<Value = TriMesh> {
             prop::collection::vec(point(2.5), 3..40),
             prop::collection::vec((0usize..1000, 0usize..1000, 0usize..1000), 1..48),
         )
-            .prop_map(|(vertices, faces)| {
-                let n = vertices.len();
-                let triangles = faces
-                    .into_iter()
-                    .map(|(a, b, c)| [(a % n) as u32, (b % n) as u32, (c % n) as u32])
-                    .collect();
-                TriMesh::new(vertices, triangles).unwrap()
-            }),
+            .prop_map(soup),
         (point(1.0), 0.1f64..2.0).prop_map(|(lo, side)| {
             TriMesh::cuboid(lo, lo + Vector3::new(side, side * 0.5, side * 2.0)).unwrap()
         }),
@@ -202,4 +205,171 @@ fn refusals_are_typed() {
         big.shape_hits(&ball),
         Err(Error::OutOfRange { .. })
     ));
+}
+
+/// An answer with a refusal ([`Error::UnsupportedPair`]) as `None`; any other error fails.
+fn decided(answer: Result<bool, Error>) -> Option<bool> {
+    match answer {
+        Ok(b) => Some(b),
+        Err(Error::UnsupportedPair { .. }) => None,
+        Err(e) => panic!("not a refusal: {e}"),
+    }
+}
+
+/// Whether the mesh's answer is the one its triangles' answers give, in any order: `true`
+/// exactly when a triangle is proved to answer `true`, `false` when every triangle is proved
+/// `false` (a refused triangle may also be set aside by its box), refused otherwise.
+fn agrees(mesh: Option<bool>, each: &[Option<bool>]) -> bool {
+    let any_true = each.contains(&Some(true));
+    let all_false = each.iter().all(|a| *a == Some(false));
+    match mesh {
+        Some(true) => any_true,
+        Some(false) => !any_true,
+        None => !any_true && !all_false,
+    }
+}
+
+/// `intersects` and `within_distance(c)` of the shape against the mesh (in both modes) agree
+/// with its answers against each triangle.
+fn check_against_each_triangle(mesh: &TriMesh, shape: &Shape, c: f64) -> Result<(), String> {
+    let triangles: Vec<Shape> = (0..mesh.num_triangles() as u32)
+        .map(|i| mesh.triangle(i).into())
+        .collect();
+    let meets: Vec<_> = triangles
+        .iter()
+        .map(|t| decided(query::intersects(t, shape)))
+        .collect();
+    let near: Vec<_> = triangles
+        .iter()
+        .map(|t| decided(query::within_distance(t, shape, c)))
+        .collect();
+    for mode in [Mode::Bvh, Mode::Brute] {
+        let collider = Collider::new(mesh.clone()).with_mode(mode);
+        let m = decided(collider.intersects_shape(shape));
+        let w = decided(collider.shape_within_distance(shape, c));
+        if !agrees(m, &meets) || !agrees(w, &near) {
+            return Err(format!(
+                "{mode:?}: intersects {m:?} from {meets:?}, within {c} {w:?} from {near:?}"
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn reversed(mesh: &TriMesh) -> TriMesh {
+    let faces = (0..mesh.num_triangles() as u32)
+        .rev()
+        .map(|i| mesh.triangles()[i as usize])
+        .collect();
+    TriMesh::new(mesh.vertices().to_vec(), faces).unwrap()
+}
+
+/// A post of radius 1 around the z axis, a triangle exactly 0.5 from its side (the filter
+/// proves nothing at clearance 0.5: touching) and one 0.2 from it (proved within reach): the
+/// mesh is within 0.5 whichever triangle comes first.
+#[test]
+fn a_triangle_proved_within_reach_decides_beside_one_refused() {
+    let post: Shape = Cylinder::new(Point3::origin(), Point3::new(0.0, 0.0, 1.0), 1.0)
+        .unwrap()
+        .into();
+    let cone: Shape = Cone::new(Point3::new(0.0, 0.0, 2.0), Point3::origin(), 2.0)
+        .unwrap()
+        .into();
+    // Cone: radius 2 at z = 0, 1 at z = 1; the triangles touch x = 2.5 and x = 2.2 at z = 0.
+    for (shape, touching, near) in [(post, 1.5, 1.2), (cone, 2.5, 2.2)] {
+        let vertices = vec![
+            Point3::new(touching, -1.0, 0.0),
+            Point3::new(touching, 1.0, 0.0),
+            Point3::new(touching, 0.0, 0.5),
+            Point3::new(near, -1.0, 0.0),
+            Point3::new(near, 1.0, 0.0),
+            Point3::new(near, 0.0, 0.5),
+        ];
+        let mesh = TriMesh::new(vertices, vec![[0, 1, 2], [3, 4, 5]]).unwrap();
+        let untouched: Shape = mesh.triangle(0).into();
+        let refused = query::within_distance(&untouched, &shape, 0.5);
+        for mesh in [mesh.clone(), reversed(&mesh)] {
+            for mode in [Mode::Bvh, Mode::Brute] {
+                let collider = Collider::new(mesh.clone()).with_mode(mode);
+                // (Today the filter proves neither triangle within 0.5 of the post: the mesh
+                // answer must still be the one the triangles give, in both orders.)
+                let each: Vec<_> = (0..2)
+                    .map(|i| {
+                        decided(query::within_distance(
+                            &mesh.triangle(i).into(),
+                            &shape,
+                            0.5,
+                        ))
+                    })
+                    .collect();
+                let id = Isometry3::identity();
+                assert!(agrees(
+                    decided(collider.shape_within_distance(&shape, 0.5)),
+                    &each
+                ));
+                assert!(agrees(
+                    decided(collider.shape_within_distance_at(&id, &shape, &id, 0.5)),
+                    &each
+                ));
+                // Neither triangle meets the shape (both are proved apart).
+                assert!(!collider.intersects_shape(&shape).unwrap());
+                // Alone, the touching triangle gets the pair's own answer.
+                let alone = TriMesh::new(mesh.vertices().to_vec(), vec![[0, 1, 2]]).unwrap();
+                let alone = Collider::new(alone).with_mode(mode);
+                assert_eq!(
+                    decided(alone.shape_within_distance(&shape, 0.5)),
+                    decided(query::within_distance(&untouched, &shape, 0.5)),
+                );
+            }
+            check_against_each_triangle(&mesh, &shape, 0.5).unwrap();
+        }
+        // (While the pair filter leaves it undecided, the case above is the refused one.)
+        if let Err(e) = refused {
+            assert!(matches!(e, Error::UnsupportedPair { .. }), "{e}");
+        }
+    }
+}
+
+/// Cylinders and cones on a half-unit grid, axes along a coordinate axis, near triangles on
+/// the same grid: many touch, so some pair answers are refused.
+fn grid_point() -> impl Strategy<Value = Point3<f64>> {
+    (-4i32..=4, -4i32..=4, -4i32..=4)
+        .prop_map(|(x, y, z)| Point3::new(x as f64 * 0.5, y as f64 * 0.5, z as f64 * 0.5))
+}
+
+fn round_shape() -> impl Strategy<Value = Shape> {
+    (grid_point(), 0usize..3, 1i32..=4, 1i32..=3, any::<bool>()).prop_map(
+        |(a, axis, length, radius, cone)| {
+            let mut b = a;
+            b[axis] += length as f64 * 0.5;
+            let r = radius as f64 * 0.5;
+            if cone {
+                Cone::new(a, b, r).unwrap().into()
+            } else {
+                Cylinder::new(a, b, r).unwrap().into()
+            }
+        },
+    )
+}
+
+fn grid_mesh() -> impl Strategy<Value = TriMesh> {
+    (
+        prop::collection::vec(grid_point(), 3..12),
+        prop::collection::vec((0usize..100, 0usize..100, 0usize..100), 1..10),
+    )
+        .prop_map(soup)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn round_shapes_against_a_mesh_agree_with_each_triangle_in_either_order(
+        mesh in grid_mesh(),
+        shape in round_shape(),
+        c in prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0f64..1.5],
+    ) {
+        check_against_each_triangle(&mesh, &shape, c).map_err(TestCaseError::fail)?;
+        check_against_each_triangle(&reversed(&mesh), &shape, c).map_err(TestCaseError::fail)?;
+    }
 }

@@ -16,7 +16,13 @@
 //! Refused: a shape or mesh (placed by its pose) with a coordinate beyond
 //! [`MAX_MAGNITUDE`] ([`Error::CoordinateOutOfRange`], [`Error::OutOfRange`]), a clearance
 //! that is not a distance ([`Error::InvalidClearance`]), a pose that is not a rigid motion, and
-//! a pair the engines do not decide ([`Error::UnsupportedPair`]).
+//! a pair the engines do not decide ([`Error::UnsupportedPair`]). A refused triangle does not
+//! decide the mesh's answer by itself, so the answer does not depend on the order the
+//! triangles are visited in: `intersects_shape` and `shape_within_distance` are `true` when
+//! any triangle is proved to meet (to come within reach), `false` when every candidate
+//! triangle is proved not to, and refused otherwise; `distance_to_shape` sets a refused
+//! triangle aside only when its box is proved farther than the distance found; `shape_hits`
+//! is refused when any candidate triangle is (the list would not be known).
 //!
 //! ```
 //! use cga_collide::{nalgebra::{Isometry3, Point3}, shape::Shape, Ball, Collider, TriMesh};
@@ -166,8 +172,9 @@ impl Collider {
     /// [`query::distance`] among the triangles the search examines
     /// (ties to the smaller index), which skips only triangles proved farther than the best so
     /// far; `distance` and the witnesses are that pair's. The error bound covers the pair's own
-    /// bound and every other triangle examined (near-ties). An empty mesh is
-    /// [`Error::Empty`].
+    /// bound and every other triangle examined (near-ties). A triangle whose pair distance is
+    /// refused is skipped only when its box is proved farther than the distance found;
+    /// otherwise the answer is that refusal. An empty mesh is [`Error::Empty`].
     pub fn distance_to_shape(&self, shape: &Shape) -> Result<CertifiedDistance, Error> {
         self.distance_to_shape_in(Frame::Own, shape)
     }
@@ -206,16 +213,39 @@ impl Collider {
 
     fn intersects_shape_in(&self, frame: Frame, shape: &Shape) -> Result<bool, Error> {
         let reach = self.check_shape_pair(frame, shape)?;
-        let flow = self.shape_candidates(
+        self.any_triangle(
             frame,
             |b| reach.within(b, 0.0),
-            |_, t| match query::intersects(&as_shape(t), shape) {
-                Ok(false) => ControlFlow::Continue(()),
-                Ok(true) => ControlFlow::Break(Ok(())),
-                Err(e) => ControlFlow::Break(Err(e)),
-            },
-        )?;
-        Ok(stopped(flow)?.is_some())
+            |t| query::intersects(&as_shape(t), shape),
+        )
+    }
+
+    /// Whether `pair` holds for a candidate triangle (a triangle whose box passes `keep`):
+    /// `true` at the first triangle it is proved for; `false` when it is proved false for
+    /// every candidate; otherwise the first refusal ([`Error::UnsupportedPair`]) met, which
+    /// does not stop the search, so the answer does not depend on the visiting order. Any
+    /// other error stops it.
+    fn any_triangle(
+        &self,
+        frame: Frame,
+        keep: impl Fn(&Aabb) -> bool,
+        pair: impl Fn(&Triangle) -> Result<bool, Error>,
+    ) -> Result<bool, Error> {
+        let mut refused = None;
+        let flow = self.shape_candidates(frame, keep, |_, t| match pair(t) {
+            Ok(false) => ControlFlow::Continue(()),
+            Ok(true) => ControlFlow::Break(Ok(())),
+            Err(e @ Error::UnsupportedPair { .. }) => {
+                refused.get_or_insert(e);
+                ControlFlow::Continue(())
+            }
+            Err(e) => ControlFlow::Break(Err(e)),
+        })?;
+        match (stopped(flow)?, refused) {
+            (Some(()), _) => Ok(true),
+            (None, Some(e)) => Err(e),
+            (None, None) => Ok(false),
+        }
     }
 
     fn intersects_shape_solid_in(&self, frame: Frame, shape: &Shape) -> Result<bool, Error> {
@@ -244,16 +274,11 @@ impl Collider {
     fn shape_within_distance_in(&self, frame: Frame, shape: &Shape, c: f64) -> Result<bool, Error> {
         check_clearance(c)?;
         let reach = self.check_shape_pair(frame, shape)?;
-        let flow = self.shape_candidates(
+        self.any_triangle(
             frame,
             |b| reach.within(b, c),
-            |_, t| match query::within_distance(&as_shape(t), shape, c) {
-                Ok(false) => ControlFlow::Continue(()),
-                Ok(true) => ControlFlow::Break(Ok(())),
-                Err(e) => ControlFlow::Break(Err(e)),
-            },
-        )?;
-        Ok(stopped(flow)?.is_some())
+            |t| query::within_distance(&as_shape(t), shape, c),
+        )
     }
 
     fn distance_to_shape_in(
@@ -291,6 +316,23 @@ impl Collider {
         cutoff: f64,
     ) -> Result<Bounded, Error> {
         let reach = self.check_shape_pair(frame, shape)?;
+        self.nearest_triangle(frame, &reach, cutoff, |t| {
+            query::distance(&as_shape(t), shape)
+        })
+    }
+
+    /// The search of [`distance_to_shape_below_at`](Self::distance_to_shape_below_at) with
+    /// `pair` the certified distance of a triangle to the shape, which reaches `reach`. A
+    /// triangle `pair` refuses ([`Error::UnsupportedPair`]) is set aside when its box is
+    /// proved farther than the least upper bound found in the end (so it cannot be the
+    /// nearest); otherwise the first refusal is the answer. Any other error stops the search.
+    fn nearest_triangle(
+        &self,
+        frame: Frame,
+        reach: &Reach,
+        cutoff: f64,
+        pair: impl Fn(&Triangle) -> Result<CertifiedDistance, Error>,
+    ) -> Result<Bounded, Error> {
         let cutoff = cutoff.max(0.0);
         // The least proved upper bound on the distance so far (or the cutoff): nodes farther
         // are set aside.
@@ -298,12 +340,14 @@ impl Collider {
         // The least proved lower bound over the triangles examined.
         let mut lower = f64::INFINITY;
         let mut best: Option<(u32, CertifiedDistance)> = None;
+        // The first refusal, and the boxes of the triangles refused.
+        let mut refused: Option<(Error, Vec<Aabb>)> = None;
         // Nearest first: the bound falls early, so few triangles are measured.
         let flow = self.shape_candidates_nearest_first(
             frame,
             |b| reach.gap(b),
             || bound.get(),
-            |i, t| match query::distance(&as_shape(t), shape) {
+            |i, t| match pair(t) {
                 Ok(d) => {
                     lower = lower.min((d.distance - d.error_bound).next_down().max(0.0));
                     bound.set(bound.get().min((d.distance + d.error_bound).next_up()));
@@ -315,10 +359,22 @@ impl Collider {
                     }
                     ControlFlow::Continue(())
                 }
+                Err(e @ Error::UnsupportedPair { .. }) => {
+                    let b = Aabb::of_points(t.vertices());
+                    refused.get_or_insert_with(|| (e, Vec::new())).1.push(b);
+                    ControlFlow::Continue(())
+                }
                 Err(e) => ControlFlow::Break(Err(e)),
             },
         )?;
         stopped::<()>(flow)?;
+        // A refused triangle whose box is proved farther than the final bound is farther
+        // than a triangle examined (or than the cutoff), as a node set aside is.
+        if let Some((e, boxes)) = refused {
+            if boxes.iter().any(|b| reach.within(b, bound.get())) {
+                return Err(e);
+            }
+        }
         // A node set aside is farther than the bound at the time: at least the cutoff or the
         // upper end of an examined triangle, itself at least `lower`.
         let (i, d) = match best {
@@ -419,6 +475,129 @@ impl Collider {
                 // The pose is checked as the tree path checks it, so both modes refuse alike.
                 self.world_boxes(pose)?;
                 self.placed(pose)?.shape_candidates(Frame::Own, keep, visit)
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Ball, TriMesh};
+
+    /// Two upright triangles in the planes `x = 1` and `x = 10`, in either order.
+    fn two_walls(near_first: bool) -> Collider {
+        let wall = |x: f64| {
+            [
+                Point3::new(x, -1.0, -1.0),
+                Point3::new(x, 1.0, -1.0),
+                Point3::new(x, 0.0, 1.0),
+            ]
+        };
+        let (first, second) = if near_first {
+            (wall(1.0), wall(10.0))
+        } else {
+            (wall(10.0), wall(1.0))
+        };
+        let vertices = first.into_iter().chain(second).collect();
+        Collider::new(TriMesh::new(vertices, vec![[0, 1, 2], [3, 4, 5]]).expect("valid"))
+    }
+
+    fn refusal() -> Error {
+        Error::UnsupportedPair {
+            query: "test",
+            a: "triangle",
+            b: "ball",
+        }
+    }
+
+    fn is_near(t: &Triangle) -> bool {
+        t.vertices()[0].x < 5.0
+    }
+
+    #[test]
+    fn a_refused_triangle_does_not_decide_alone_in_either_order() {
+        let everything = |_: &Aabb| true;
+        for near_first in [true, false] {
+            for mode in [Mode::Bvh, Mode::Brute] {
+                let mesh = two_walls(near_first).with_mode(mode);
+                // One proved, one refused: proved, whichever comes first.
+                let near_holds = |t: &Triangle| if is_near(t) { Ok(true) } else { Err(refusal()) };
+                assert!(mesh
+                    .any_triangle(Frame::Own, everything, near_holds)
+                    .unwrap());
+                let far_holds = |t: &Triangle| if is_near(t) { Err(refusal()) } else { Ok(true) };
+                assert!(mesh
+                    .any_triangle(Frame::Own, everything, far_holds)
+                    .unwrap());
+                // One proved false, one refused: refused.
+                let unknown = |t: &Triangle| {
+                    if is_near(t) {
+                        Ok(false)
+                    } else {
+                        Err(refusal())
+                    }
+                };
+                assert!(matches!(
+                    mesh.any_triangle(Frame::Own, everything, unknown),
+                    Err(Error::UnsupportedPair { .. })
+                ));
+                assert!(!mesh
+                    .any_triangle(Frame::Own, everything, |_| Ok(false))
+                    .unwrap());
+                // Other errors stop the search.
+                let broken = |t: &Triangle| {
+                    if is_near(t) {
+                        Ok(true)
+                    } else {
+                        Err(Error::InvalidClearance { value: -1.0 })
+                    }
+                };
+                let got = mesh.any_triangle(Frame::Own, everything, broken);
+                assert!(matches!(
+                    got,
+                    Ok(true) | Err(Error::InvalidClearance { .. })
+                ));
+                if matches!(mode, Mode::Brute) {
+                    // Brute force visits the triangles in order.
+                    assert_eq!(got.is_ok(), near_first);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_refused_triangle_proved_farther_than_the_nearest_is_set_aside() {
+        let ball: Shape = Ball::new(Point3::origin(), 0.5).expect("valid").into();
+        let reach = Reach::of(&ball);
+        let exact = |t: &Triangle| query::distance(&as_shape(t), &ball);
+        for near_first in [true, false] {
+            for mode in [Mode::Bvh, Mode::Brute] {
+                let mesh = two_walls(near_first).with_mode(mode);
+                let near_index = u32::from(!near_first);
+                // The far wall refused: its box is 9.5 away, the near wall 0.5.
+                let far_refused = |t: &Triangle| if is_near(t) { exact(t) } else { Err(refusal()) };
+                let Bounded::Below(d) = mesh
+                    .nearest_triangle(Frame::Own, &reach, f64::INFINITY, far_refused)
+                    .unwrap()
+                else {
+                    panic!("no distance");
+                };
+                assert_eq!(d.triangles, Some((near_index, 0)));
+                assert!((d.distance - 0.5).abs() <= d.error_bound);
+                // The near wall refused: the far one cannot stand for it.
+                let near_refused =
+                    |t: &Triangle| if is_near(t) { Err(refusal()) } else { exact(t) };
+                assert!(matches!(
+                    mesh.nearest_triangle(Frame::Own, &reach, f64::INFINITY, near_refused),
+                    Err(Error::UnsupportedPair { .. })
+                ));
+                // Both refused but beyond a cutoff: a lower bound, as before.
+                let all_refused = |_: &Triangle| Err(refusal());
+                assert!(matches!(
+                    mesh.nearest_triangle(Frame::Own, &reach, 0.25, all_refused),
+                    Ok(Bounded::AtLeast(b)) if b <= 0.5
+                ));
             }
         }
     }

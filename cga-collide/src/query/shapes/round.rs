@@ -47,7 +47,7 @@ mod filter;
 #[cfg(test)]
 mod filter_tests;
 mod half_space;
-mod interval;
+pub(super) mod interval;
 mod meridian;
 mod planar;
 mod section;
@@ -55,6 +55,8 @@ mod segment;
 mod surd;
 mod univariate;
 
+/// The filter's support functions of cylinders and cones, which the depth search also bounds.
+pub(super) use body::Body;
 use exact3::{add, point, q, sub, Round, V3};
 
 fn unsupported(query: &'static str, a: &Shape, b: &Shape) -> Error {

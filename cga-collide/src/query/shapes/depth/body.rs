@@ -16,9 +16,10 @@ use ga_core::scalar::{rational_from_f64, Rational, Ring};
 use nalgebra::{Point3, Vector3};
 use num_traits::Signed;
 
-use super::interval::{cross3, dot3, lift, sub3, Iv};
 use super::polytope::Core;
 use crate::exact::vector::{cross, dot, sub};
+use crate::query::shapes::round::interval::{dot3, lift, norm2, Iv, WHOLE};
+use crate::query::shapes::round::Body as Filtered;
 use crate::shape::{Segment, Shape};
 
 pub(super) type P3 = [f64; 3];
@@ -38,11 +39,12 @@ fn p3(p: &Point3<f64>) -> P3 {
     [p.x, p.y, p.z]
 }
 
-fn q(x: f64) -> Rational {
+/// `x` exactly (`0` for the non-finite values the shapes never hold).
+pub(super) fn q(x: f64) -> Rational {
     rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)
 }
 
-fn qv(p: &P3) -> [Rational; 3] {
+pub(super) fn qv(p: &P3) -> [Rational; 3] {
     p.map(q)
 }
 
@@ -88,36 +90,26 @@ impl Body {
         }
     }
 
-    /// A proved interval of `h(n)`.
+    /// A proved interval of `h(n)` (a cylinder's or cone's is the filter's).
     pub(super) fn support(&self, n: &P3) -> Iv {
-        let ni = lift(n);
-        // `r·|n × d| / |d|`.
-        let rim = |from: &P3, to: &P3, r: f64| {
-            let d = sub3(&lift(to), &lift(from));
-            let c = cross3(&ni, &d);
-            Iv::point(r) * dot3(&c, &c).div_positive(dot3(&d, &d)).sqrt()
-        };
         match self {
             Body::Polytopal { core, .. } => {
-                let mut best: Option<Iv> = None;
-                for p in &core.points {
-                    let mut x = Iv::point(0.0);
-                    for t in p.parts() {
-                        x = x + dot3(&lift(t), &ni);
-                    }
-                    best = Some(best.map_or(x, |b| b.max(x)));
-                }
-                let best = best.unwrap_or(Iv {
-                    lo: f64::NEG_INFINITY,
-                    hi: f64::INFINITY,
-                });
-                best + Iv::point(core.radius) * dot3(&ni, &ni).sqrt()
+                let ni = lift(n);
+                let best = core
+                    .points
+                    .iter()
+                    .map(|p| {
+                        p.parts()
+                            .iter()
+                            .fold(Iv::point(0.0), |x, t| x.add(dot3(&lift(t), &ni)))
+                    })
+                    .reduce(Iv::max)
+                    .unwrap_or(WHOLE);
+                best.add(Iv::point(core.radius).mul(norm2(&ni).sqrt()))
             }
-            Body::Cylinder { a, b, radius } => {
-                dot3(&lift(a), &ni).max(dot3(&lift(b), &ni)) + rim(a, b, *radius)
-            }
+            Body::Cylinder { a, b, radius } => Filtered::Cylinder(*a, *b, *radius).support_value(n),
             Body::Cone { apex, base, radius } => {
-                dot3(&lift(apex), &ni).max(dot3(&lift(base), &ni) + rim(apex, base, *radius))
+                Filtered::Cone(*apex, *base, *radius).support_value(n)
             }
         }
     }
@@ -245,14 +237,9 @@ pub(super) fn gap_is_nonpositive(a: &Body, b: &Body, n: &P3) -> bool {
 
 /// A proved upper bound of `(h_A(n) + h_B(−n)) / |n|` (`+∞` when unknown).
 pub(super) fn gap_upper(a: &Body, b: &Body, n: &P3) -> f64 {
-    let ni = lift(n);
-    let h = a.support(n) + b.support(&n.map(|x| -x));
-    let g = h.div_positive(dot3(&ni, &ni).sqrt());
-    if g.hi.is_nan() {
-        f64::INFINITY
-    } else {
-        g.hi
-    }
+    let h = a.support(n).add(b.support(&n.map(|x| -x)));
+    // (Never NaN: an unknown bound is the whole line.)
+    h.div_positive(norm2(&lift(n)).sqrt()).hi
 }
 
 #[cfg(test)]

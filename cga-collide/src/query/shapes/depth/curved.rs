@@ -26,6 +26,7 @@
 use nalgebra::{Point3, Vector3};
 
 use super::body::{gap_is_nonpositive, gap_upper, Body, P3};
+use super::rounding::midpoint;
 use super::{inner, unit, SignedDistance, SignedDistanceKind};
 use crate::error::Error;
 use crate::shape::{ConvexHull, Shape};
@@ -173,8 +174,7 @@ pub(super) fn signed_distance(a: &Shape, b: &Shape, meets: bool) -> Result<Signe
     if !(low.is_finite() && high.is_finite() && low <= high) {
         return Err(unsupported(a, b));
     }
-    let value = low * 0.5 + high * 0.5;
-    let error_bound = ((high - value).max(value - low) * (1.0 + 4.0 * f64::EPSILON)).next_up();
+    let (value, error_bound) = midpoint(low, high);
     Ok(SignedDistance {
         value,
         error_bound,

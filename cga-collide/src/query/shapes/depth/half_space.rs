@@ -10,21 +10,17 @@
 //! has the same expression with its support function, which holds a square root: its sign is
 //! decided exactly and its value bounded with outward rounding ([`to_round`]).
 
-use ga_core::scalar::{rational_from_f64, Rational, Ring};
+use ga_core::scalar::{Rational, Ring};
 use nalgebra::{Point3, Vector3};
 use num_traits::Signed;
 
-use super::body::Body;
-use super::interval::{dot3, lift as lift3};
+use super::body::{q, Body};
 use super::polytope::Core;
-use super::rounding::signed_root_minus;
+use super::rounding::{midpoint, signed_root_minus};
 use super::SignedDistance;
 use crate::exact::vector::{cross, dot, sub};
+use crate::query::shapes::round::interval::{dot3, lift as lift3, norm2};
 use crate::shape::HalfSpace;
-
-fn q(x: f64) -> Rational {
-    rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)
-}
 
 fn lift(p: &Vector3<f64>) -> [Rational; 3] {
     [q(p.x), q(p.y), q(p.z)]
@@ -51,18 +47,31 @@ pub(super) fn to_core(h: &HalfSpace, core: &Core, flip: bool) -> SignedDistance 
     let (v, e, kind) = value(&n, &dot(&m, &m), core.radius);
     let up = super::unit(h.normal());
     let x = Point3::from(core.points[i].approx()) - up * core.radius;
-    let on_plane = x - up * v;
-    let (normal, wa, wb) = if flip {
+    from_deepest(h, x, (v, e, kind), flip)
+}
+
+/// The signed distance `value` (with its bound and kind) from the half-space `h` to a shape
+/// whose point deepest along the half-space's outward normal is `x`; the witnesses are `x` and
+/// its shadow on the boundary plane moved by the value (`flip`: the shape first).
+fn from_deepest(
+    h: &HalfSpace,
+    x: Point3<f64>,
+    (value, error_bound, kind): (f64, f64, super::SignedDistanceKind),
+    flip: bool,
+) -> SignedDistance {
+    let up = super::unit(h.normal());
+    let on_plane = x - up * value;
+    let (normal, witness_a, witness_b) = if flip {
         (-up, x, on_plane)
     } else {
         (up, on_plane, x)
     };
     SignedDistance {
-        value: v,
-        error_bound: e,
+        value,
+        error_bound,
         normal,
-        witness_a: wa,
-        witness_b: wb,
+        witness_a,
+        witness_b,
         kind,
     }
 }
@@ -122,7 +131,11 @@ pub(super) fn to_round(h: &HalfSpace, body: &Body, flip: bool) -> SignedDistance
         .min()
         .unwrap_or(Equal);
     let mi = lift3(&m);
-    let g = (-body.support(&minus) - dot3(&lift3(&p), &mi)).div_positive(dot3(&mi, &mi).sqrt());
+    let g = body
+        .support(&minus)
+        .neg()
+        .sub(dot3(&lift3(&p), &mi))
+        .div_positive(norm2(&mi).sqrt());
     let (mut lo, mut hi) = (g.lo, g.hi);
     let kind = match sign {
         Less => {
@@ -138,26 +151,7 @@ pub(super) fn to_round(h: &HalfSpace, body: &Body, flip: bool) -> SignedDistance
             super::SignedDistanceKind::Touching
         }
     };
-    let v = lo * 0.5 + hi * 0.5;
-    let e = if lo == hi {
-        0.0
-    } else {
-        ((hi - v).max(v - lo) * (1.0 + 4.0 * f64::EPSILON)).next_up()
-    };
-    let up = super::unit(h.normal());
-    let x = body.support_point(&-up);
-    let on_plane = x - up * v;
-    let (normal, wa, wb) = if flip {
-        (-up, x, on_plane)
-    } else {
-        (up, on_plane, x)
-    };
-    SignedDistance {
-        value: v,
-        error_bound: e,
-        normal,
-        witness_a: wa,
-        witness_b: wb,
-        kind,
-    }
+    let (v, e) = midpoint(lo, hi);
+    let x = body.support_point(&-super::unit(h.normal()));
+    from_deepest(h, x, (v, e, kind), flip)
 }

@@ -6,19 +6,11 @@
 //! by factors `1 − 2^-k` until the exact test admits it, or dropped. The cap centres, the apex
 //! and the base centre lie in the solid exactly and are always kept, so the set is never empty.
 
-use ga_core::scalar::{rational_from_f64, Rational, Ring};
+use ga_core::scalar::{Rational, Ring};
 use nalgebra::{Point3, Vector3};
 
-use super::body::{Body, P3};
+use super::body::{q, qv, Body, P3};
 use crate::exact::vector::{cross, dot, sub};
-
-fn q(x: f64) -> Rational {
-    rational_from_f64(x).unwrap_or_else(<Rational as Ring>::zero)
-}
-
-fn qv(p: &P3) -> [Rational; 3] {
-    p.map(q)
-}
 
 fn pt(p: &P3) -> Point3<f64> {
     Point3::new(p[0], p[1], p[2])
@@ -27,28 +19,23 @@ fn pt(p: &P3) -> Point3<f64> {
 /// Exactly: does the round body contain `p`? (`true` for polytopal bodies, which are never
 /// asked.)
 pub(super) fn contains(body: &Body, p: &P3) -> bool {
-    let zero = <Rational as Ring>::zero();
-    match body {
-        Body::Polytopal { .. } => true,
-        Body::Cylinder { a, b, radius } => {
-            let (a, d) = (qv(a), sub(&qv(b), &qv(a)));
-            let x = sub(&qv(p), &a);
-            let t = dot(&x, &d);
-            let dd = dot(&d, &d);
-            let c = cross(&x, &d);
-            let r = q(*radius);
-            t >= zero && t <= dd && dot(&c, &c) <= &r * &r * dd
+    let Some((from, to, radius, _)) = axis(body) else {
+        return true;
+    };
+    // With `d` the axis and `x = p − from`: `t = x·d` between `0` and `d·d` (between the caps,
+    // or the apex and the base), and the squared distance from the axis `|x × d|²/d·d` within
+    // the radius there (`r²`, or `r²·(t/d·d)²` for a cone).
+    let (from, d) = (qv(&from), sub(&qv(&to), &qv(&from)));
+    let x = sub(&qv(p), &from);
+    let (t, dd) = (dot(&x, &d), dot(&d, &d));
+    let c = cross(&x, &d);
+    let r = q(radius);
+    let inside_slab = t >= <Rational as Ring>::zero() && t <= dd;
+    inside_slab
+        && match body {
+            Body::Cone { .. } => dot(&c, &c) * dd <= &r * &r * &t * &t,
+            _ => dot(&c, &c) <= &r * &r * dd,
         }
-        Body::Cone { apex, base, radius } => {
-            let (apex, d) = (qv(apex), sub(&qv(base), &qv(apex)));
-            let x = sub(&qv(p), &apex);
-            let t = dot(&x, &d);
-            let dd = dot(&d, &d);
-            let c = cross(&x, &d);
-            let r = q(*radius);
-            t >= zero && t <= dd && dot(&c, &c) * dd <= &r * &r * &t * &t
-        }
-    }
 }
 
 /// The axis `(from, to)` of a round body, its radius and a point well inside it.

@@ -73,7 +73,6 @@ mod curved;
 mod fast;
 mod half_space;
 mod inner;
-mod interval;
 mod polytope;
 mod rounding;
 #[cfg(test)]

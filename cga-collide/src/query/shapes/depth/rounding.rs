@@ -75,6 +75,17 @@ pub(super) fn signed_root_minus(
     (v, e.next_up(), kind)
 }
 
+/// A value of the proved bracket `[lo, hi]` (its midpoint) and a bound on its distance from
+/// every value in the bracket; an exact value (`lo == hi`) is itself, with bound `0`.
+pub(super) fn midpoint(lo: f64, hi: f64) -> (f64, f64) {
+    if lo == hi {
+        return (lo, 0.0);
+    }
+    let v = lo * 0.5 + hi * 0.5;
+    // The two halves and their sum round; the margin and the last step up pay for it.
+    (v, ((hi - v).max(v - lo) * (1.0 + 4.0 * EPS)).next_up())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -102,6 +113,16 @@ mod tests {
             signed_root_minus(false, &q(0.0), [0.0, 0.0]),
             (0.0, 0.0, SignedDistanceKind::Touching)
         );
+    }
+
+    #[test]
+    fn a_midpoint_is_within_its_bound_of_the_bracket() {
+        assert_eq!(midpoint(0.0, 0.0), (0.0, 0.0));
+        assert_eq!(midpoint(TINY, TINY), (TINY, 0.0));
+        for (lo, hi) in [(-1.0, 3.0), (0.1, 0.1f64.next_up()), (-f64::MAX, f64::MAX)] {
+            let (v, e) = midpoint(lo, hi);
+            assert!(v - e <= lo && hi <= v + e, "{lo} {hi}: {v} ± {e}");
+        }
     }
 
     #[test]

@@ -13,7 +13,7 @@ use crate::shape::Shape;
 pub(super) type P3 = [f64; 3];
 
 /// A convex shape in scaled coordinates.
-pub(super) enum Body {
+pub(in crate::query::shapes) enum Body {
     /// The convex hull of points: `f64` values for the search, interval boxes holding the
     /// exact points (a cuboid's corners are sums) for the proofs.
     Points(Vec<P3>, Vec<IvP3>),
@@ -197,7 +197,7 @@ impl Body {
     }
 
     /// Bounds on `max over the body of d·x` (the exact body, not shrunk).
-    pub(super) fn support_value(&self, d: &P3) -> Iv {
+    pub(in crate::query::shapes) fn support_value(&self, d: &P3) -> Iv {
         let di = lift(d);
         match self {
             Body::Points(_, boxes) => boxes

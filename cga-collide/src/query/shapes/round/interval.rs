@@ -8,15 +8,15 @@
 
 /// The interval `[lo, hi]` (possibly infinite; never NaN).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Iv {
-    pub(super) lo: f64,
-    pub(super) hi: f64,
+pub(in crate::query::shapes) struct Iv {
+    pub(in crate::query::shapes) lo: f64,
+    pub(in crate::query::shapes) hi: f64,
 }
 
 /// Three interval coordinates.
-pub(super) type IvP3 = [Iv; 3];
+pub(in crate::query::shapes) type IvP3 = [Iv; 3];
 
-const WHOLE: Iv = Iv {
+pub(in crate::query::shapes) const WHOLE: Iv = Iv {
     lo: f64::NEG_INFINITY,
     hi: f64::INFINITY,
 };
@@ -24,7 +24,7 @@ const WHOLE: Iv = Iv {
 impl Iv {
     /// The exact value `x`.
     #[inline]
-    pub(super) const fn point(x: f64) -> Iv {
+    pub(in crate::query::shapes) const fn point(x: f64) -> Iv {
         Iv { lo: x, hi: x }
     }
 
@@ -46,17 +46,17 @@ impl Iv {
     }
 
     #[inline]
-    pub(super) fn add(self, o: Iv) -> Iv {
+    pub(in crate::query::shapes) fn add(self, o: Iv) -> Iv {
         Iv::outward(self.lo + o.lo, self.hi + o.hi)
     }
 
     #[inline]
-    pub(super) fn sub(self, o: Iv) -> Iv {
+    pub(in crate::query::shapes) fn sub(self, o: Iv) -> Iv {
         Iv::outward(self.lo - o.hi, self.hi - o.lo)
     }
 
     #[inline]
-    pub(super) fn neg(self) -> Iv {
+    pub(in crate::query::shapes) fn neg(self) -> Iv {
         Iv {
             lo: -self.hi,
             hi: -self.lo,
@@ -64,7 +64,7 @@ impl Iv {
     }
 
     #[inline]
-    pub(super) fn mul(self, o: Iv) -> Iv {
+    pub(in crate::query::shapes) fn mul(self, o: Iv) -> Iv {
         if !self.is_finite() || !o.is_finite() {
             return WHOLE;
         }
@@ -82,7 +82,7 @@ impl Iv {
 
     /// The square (tighter than `mul` when the interval holds zero).
     #[inline]
-    pub(super) fn sqr(self) -> Iv {
+    pub(in crate::query::shapes) fn sqr(self) -> Iv {
         if !self.is_finite() {
             return WHOLE;
         }
@@ -107,7 +107,7 @@ impl Iv {
 
     /// The square root of the non-negative part (callers pass values that are `≥ 0` exactly).
     #[inline]
-    pub(super) fn sqrt(self) -> Iv {
+    pub(in crate::query::shapes) fn sqrt(self) -> Iv {
         if self.hi.is_nan() || self.lo.is_nan() {
             return WHOLE;
         }
@@ -124,7 +124,7 @@ impl Iv {
 
     /// `self / o`; the whole line unless `o` is certainly positive.
     #[inline]
-    pub(super) fn div_positive(self, o: Iv) -> Iv {
+    pub(in crate::query::shapes) fn div_positive(self, o: Iv) -> Iv {
         let positive = o.lo > 0.0;
         if !positive || !self.is_finite() || !o.is_finite() {
             return WHOLE;
@@ -143,7 +143,7 @@ impl Iv {
 
     /// The interval of `max(x, y)`.
     #[inline]
-    pub(super) fn max(self, o: Iv) -> Iv {
+    pub(in crate::query::shapes) fn max(self, o: Iv) -> Iv {
         Iv {
             lo: self.lo.max(o.lo),
             hi: self.hi.max(o.hi),
@@ -152,28 +152,28 @@ impl Iv {
 }
 
 #[inline]
-pub(super) fn lift(p: &[f64; 3]) -> IvP3 {
+pub(in crate::query::shapes) fn lift(p: &[f64; 3]) -> IvP3 {
     p.map(Iv::point)
 }
 
 #[inline]
-pub(super) fn sub3(a: &IvP3, b: &IvP3) -> IvP3 {
+pub(in crate::query::shapes) fn sub3(a: &IvP3, b: &IvP3) -> IvP3 {
     [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])]
 }
 
 #[inline]
-pub(super) fn dot3(a: &IvP3, b: &IvP3) -> Iv {
+pub(in crate::query::shapes) fn dot3(a: &IvP3, b: &IvP3) -> Iv {
     a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
 }
 
 #[inline]
-pub(super) fn norm2(a: &IvP3) -> Iv {
+pub(in crate::query::shapes) fn norm2(a: &IvP3) -> Iv {
     a[0].sqr().add(a[1].sqr()).add(a[2].sqr())
 }
 
 /// `|a × b|²`, each component of the cross product squared (so the result is `≥ 0`).
 #[inline]
-pub(super) fn cross_norm2(a: &IvP3, b: &IvP3) -> Iv {
+pub(in crate::query::shapes) fn cross_norm2(a: &IvP3, b: &IvP3) -> Iv {
     let x = a[1].mul(b[2]).sub(a[2].mul(b[1]));
     let y = a[2].mul(b[0]).sub(a[0].mul(b[2]));
     let z = a[0].mul(b[1]).sub(a[1].mul(b[0]));
