@@ -45,6 +45,9 @@ mod filter_tests;
 mod half_space;
 mod interval;
 mod meridian;
+mod meridian_signs;
+#[cfg(test)]
+mod meridian_signs_tests;
 mod planar;
 mod section;
 mod segment;
@@ -147,7 +150,8 @@ fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
 
 fn answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
     let proved = closed::within(a, b, c)
-        .or_else(|| filter::within(a, b, c));
+        .or_else(|| filter::within(a, b, c))
+        .or_else(|| meridian_signs::within(a, b, c));
     match proved {
         Some(proved) => Ok(proved),
         None => exact_answer(query, a, b, c),
