@@ -1,6 +1,8 @@
 //! Exact pair tests for every pair with a cylinder or a cone.
 //!
-//! Every query first asks the certified floating-point filter ([`filter`]): a separating
+//! Every query first tries the closed forms of the ball, segment, capsule and half-space pairs
+//! ([`closed`], the distance in the solid's meridian half-plane bounded in interval
+//! arithmetic), then the certified floating-point filter ([`filter`]): a separating
 //! direction or a common point proposed by an `f64` search and proved in interval arithmetic.
 //! Only the pairs it cannot prove (touching, a few ulps apart, degenerate) reach the exact
 //! methods of the table, so the answers are theirs.
@@ -40,6 +42,9 @@ mod body;
 mod bounded_distance;
 #[cfg(test)]
 mod bounded_distance_tests;
+mod closed;
+#[cfg(test)]
+mod closed_tests;
 mod curved;
 mod distance;
 mod exact3;
@@ -49,6 +54,9 @@ mod filter_tests;
 mod half_space;
 pub(super) mod interval;
 mod meridian;
+mod meridian_signs;
+#[cfg(test)]
+mod meridian_signs_tests;
 mod planar;
 mod section;
 mod segment;
@@ -152,7 +160,10 @@ fn decide(r: &Round, o: Other, e: &Rational) -> Option<bool> {
 }
 
 fn answer(query: &'static str, a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
-    match filter::within(a, b, c) {
+    let proved = closed::within(a, b, c)
+        .or_else(|| filter::within(a, b, c))
+        .or_else(|| meridian_signs::within(a, b, c));
+    match proved {
         Some(proved) => Ok(proved),
         None => exact_answer(query, a, b, c),
     }
