@@ -2,10 +2,12 @@
 //! each tested pair of links (or link and environment object) set aside by its world boxes or
 //! decided by the exact test of its parts.
 
+use std::collections::BinaryHeap;
+
 use crate::collider::Bounded;
 use crate::error::Error;
 use crate::parallel::over_batch;
-use crate::query::CertifiedDistance;
+use crate::query::{self, CertifiedDistance};
 
 use super::geometry::{box_gap_lower, boxes_within, place, Geometry, PairTest, Placed};
 use super::spheres::Sphere;
@@ -231,37 +233,75 @@ impl Robot {
     /// [`Error::UnsupportedPair`] when it has to be examined.
     pub fn nearest(&self, q: &[f64], against: Against) -> Result<Option<NearestPair>, Error> {
         let mut st = Staged::new(self, q)?;
-        // Every part pair with a lower bound on its distance, the larger of its spheres' gap
-        // and its placed world boxes' (placing is cheap next to a distance search, and the
-        // boxes order the pairs much better than the spheres of long links), examined nearest
-        // first: the search stops at the first bound at or past the best, so the pair that
-        // wins is usually searched first and every later search starts with its distance.
-        let mut candidates = Vec::new();
+        // Best first over two levels: every tested pair (two links, or a link and an object)
+        // enters with its link spheres' gap; when it comes up, its links are placed and its
+        // part pairs enter with the larger of their spheres' and placed boxes' gap (the boxes
+        // order long links' parts much better than their spheres). Every key is a proved
+        // lower bound on the distance of what it stands for, so the search stops at the first
+        // key at or past the best distance, having placed and measured only what could still
+        // win, and the winning pair is usually measured first.
+        let mut queue = BinaryHeap::new();
+        let mut order = 0usize;
+        let mut push = |queue: &mut BinaryHeap<Candidate>, gap: f64, a, o, part| {
+            queue.push(Candidate {
+                gap,
+                order,
+                a,
+                o,
+                part,
+            });
+            order += 1;
+        };
         for (a, o) in self.units(against) {
-            st.place_link(a)?;
-            if let Other::Link(b) = o {
-                st.place_link(b)?;
-            }
-            for k in self.link_parts[a].clone() {
-                let sphere = st.part_sphere(k);
-                for i in 0..self.member_count(o) {
-                    let gap = sphere.gap_lower(&self.member_sphere(&st, o, i));
-                    let boxes = box_gap_lower(&st.part(k).bbox, &self.member(&st, o, i).1.bbox);
-                    candidates.push((gap.max(boxes), a, o, k, i));
-                }
+            let theirs = match o {
+                Other::Link(b) => st.link_spheres[b],
+                Other::Env(e) => Some(self.environment[e].sphere),
+            };
+            // A link without geometry has no sphere and nothing to test.
+            if let (Some(sa), Some(sb)) = (st.link_spheres[a], theirs) {
+                push(&mut queue, sa.gap_lower(&sb), a, o, None);
             }
         }
-        candidates.sort_by(|x, y| x.0.total_cmp(&y.0));
         let mut best: Option<(usize, Other, CertifiedDistance)> = None;
         // The least lower end `distance - error_bound` over every examined part pair.
         let mut lowest = f64::INFINITY;
-        for (gap, a, o, k, i) in candidates {
+        while let Some(Candidate {
+            gap, a, o, part, ..
+        }) = queue.pop()
+        {
             let bound = best.as_ref().map_or(f64::INFINITY, |b| b.2.distance);
             if gap >= bound {
                 break;
             }
+            let Some((k, i, refined)) = part else {
+                st.place_link(a)?;
+                if let Other::Link(b) = o {
+                    st.place_link(b)?;
+                }
+                for k in self.link_parts[a].clone() {
+                    let sphere = st.part_sphere(k);
+                    for i in 0..self.member_count(o) {
+                        let spheres = sphere.gap_lower(&self.member_sphere(&st, o, i));
+                        let boxes = box_gap_lower(&st.part(k).bbox, &self.member(&st, o, i).1.bbox);
+                        let key = gap.max(spheres).max(boxes);
+                        push(&mut queue, key, a, o, Some((k, i, false)));
+                    }
+                }
+                continue;
+            };
             let mine = (&self.parts[k].geometry, st.part(k));
             let theirs = self.member(&st, o, i);
+            // A pair whose certified distance is a long search (two cylinders) first gets a
+            // short search's lower bound and goes back in line with it: cheaper pairs usually
+            // bring the best distance under it, and it is never measured.
+            if let (false, Some(sa), Some(sb)) = (refined, &mine.1.shape, &theirs.1.shape) {
+                if let Some(lower) = query::shapes::distance_lower_bound(sa, sb) {
+                    if lower > gap {
+                        push(&mut queue, lower, a, o, Some((k, i, true)));
+                        continue;
+                    }
+                }
+            }
             let test = PairTest {
                 a: mine,
                 b: theirs,
@@ -339,6 +379,42 @@ impl Robot {
         over_batch(qs, |q| self.nearest(q.as_ref(), against))
     }
 }
+
+/// An entry of [`Robot::nearest`]'s queue: a tested pair (`part: None`) or one of its part
+/// pairs (part `k` of link `a` and the other member's `i`-th), with a proved lower
+/// bound on its distance. The queue pops the least bound first, ties in the order pushed.
+struct Candidate {
+    gap: f64,
+    order: usize,
+    a: usize,
+    o: Other,
+    /// `(k, i, refined)`; `refined`: its gap is already a short search's bound.
+    part: Option<(usize, usize, bool)>,
+}
+
+impl Ord for Candidate {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        // Reversed: `BinaryHeap` pops its greatest.
+        other
+            .gap
+            .total_cmp(&self.gap)
+            .then(other.order.cmp(&self.order))
+    }
+}
+
+impl PartialOrd for Candidate {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl PartialEq for Candidate {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other).is_eq()
+    }
+}
+
+impl Eq for Candidate {}
 
 fn sorted(a: String, b: String) -> (String, String) {
     if a <= b {

@@ -72,6 +72,39 @@ pub fn within_distance(a: &Shape, b: &Shape, c: f64) -> Result<bool, Error> {
     }
 }
 
+/// [`within_distance`] where it is proved without the exact methods of the curved pairs
+/// (`None`: not proved; every pair without a cylinder or cone is always answered). For a
+/// caller that has a cheaper way on (a certified distance) than an exact clearance between
+/// two cylinders.
+pub(crate) fn within_distance_filtered(
+    a: &Shape,
+    b: &Shape,
+    c: f64,
+) -> Result<Option<bool>, Error> {
+    a.check_range()?;
+    b.check_range()?;
+    check_clearance(c)?;
+    Ok(if is_round(a) || is_round(b) {
+        round::within_distance_filtered(a, b, c)
+    } else {
+        Some(polytopal::within_distance(a, b, c))
+    })
+}
+
+/// A proved lower bound on [`distance`] from a short search, for the pairs whose certified
+/// distance is a long one (a cylinder or cone against a triangle, cuboid, hull, cylinder or
+/// cone); `None` for every other pair (their distance is quick) and where nothing is proved.
+pub(crate) fn distance_lower_bound(a: &Shape, b: &Shape) -> Option<f64> {
+    if a.check_range().is_err() || b.check_range().is_err() {
+        return None;
+    }
+    if is_round(a) || is_round(b) {
+        round::distance_lower_bound(a, b)
+    } else {
+        None
+    }
+}
+
 /// The minimum distance between the two shapes (`0` when they meet) with witnesses and a
 /// proved error bound.
 pub fn distance(a: &Shape, b: &Shape) -> Result<CertifiedDistance, Error> {

@@ -182,3 +182,78 @@ fn overlapping_is_zero_and_touching_holds_zero() {
         "{d:?}"
     );
 }
+
+/// Two cylinders crossing at an angle, their common perpendicular meeting both axes inside,
+/// `gap` apart along it: `(a, b, exact gap)`.
+fn crossed(
+    centre: [f64; 3],
+    angle: f64,
+    tilt: f64,
+    along: [f64; 2],
+    radii: [f64; 2],
+    gap: f64,
+) -> (Shape, Shape) {
+    // Axis `u` in the xy-plane, `v` at `angle` from it in a plane tilted by `tilt`; the
+    // perpendicular of both is `n`.
+    let u = Vector3::new(1.0, 0.0, 0.0);
+    let v = Vector3::new(
+        angle.cos(),
+        angle.sin() * tilt.cos(),
+        angle.sin() * tilt.sin(),
+    );
+    let n = u.cross(&v).normalize();
+    let c = Vector3::from(centre);
+    let fa = c;
+    let fb = c + n * (radii[0] + radii[1] + gap);
+    let a = cylinder(
+        (fa - u * along[0]).into(),
+        (fa + u * (2.0 - along[0])).into(),
+        radii[0],
+    );
+    let b = cylinder(
+        (fb - v * along[1]).into(),
+        (fb + v * (2.0 - along[1])).into(),
+        radii[1],
+    );
+    (a, b)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// Crossed cylinders take the closed form of the curved sides: tight (within `1e-12`),
+    /// and around the constructed gap (the inputs' rounding moves it by a few ulps).
+    #[test]
+    fn crossed_cylinders_take_the_closed_form(
+        centre in point(), angle in 0.2..2.9f64, tilt in -1.5..1.5f64,
+        along in prop::array::uniform2(0.3..1.7f64), radii in prop::array::uniform2(0.05..0.5f64),
+        gap in 1e-6..1.0f64,
+    ) {
+        let (a, b) = crossed(centre, angle, tilt, along, radii, gap);
+        let scale = super::filter::unit_scale(super::body::magnitude(&a).max(super::body::magnitude(&b)));
+        let bodies = (super::bounded_distance::body(&a, scale).unwrap(), super::bounded_distance::body(&b, scale).unwrap());
+        prop_assert!(super::bounded_distance::lateral(&bodies.0, &bodies.1).is_some());
+        for (x, y) in [(&a, &b), (&b, &a)] {
+            let d = distance(x, y).expect("measured");
+            prop_assert!(d.error_bound <= 1e-12, "{:?}", d);
+            prop_assert!((d.distance - gap).abs() <= d.error_bound + 1e-13, "{} {:?}", gap, d);
+        }
+    }
+
+    /// The short search's lower bound never passes the certified distance's upper end.
+    #[test]
+    fn the_short_lower_bound_is_below_the_distance(
+        round in round_shape(), other in round_shape(), p in point(), q in point(), s in point(),
+    ) {
+        let triangle: Shape = match Triangle::new(p.into(), q.into(), s.into()) {
+            Ok(t) => t.into(),
+            Err(_) => return Ok(()),
+        };
+        for b in [&other, &triangle] {
+            let (Some(lower), Some(d)) = (super::bounded_distance::lower(&round, b), distance(&round, b)) else {
+                continue;
+            };
+            prop_assert!(lower <= d.distance + d.error_bound, "{} {:?} {:?} {:?}", lower, d, round, b);
+        }
+    }
+}

@@ -111,8 +111,10 @@ proptest! {
         agrees(&solid, &capsule, 0.0)?;
         let segment: Shape = Segment::new(on + out * hair - along, on + out * hair + along).unwrap().into();
         agrees(&solid, &segment, 0.0)?;
-        // A half-space whose plane passes `hair` below the boundary point, normal `out`.
-        let plane: Shape = HalfSpace::new(on + out * hair, out).unwrap().into();
+        // The half-space beyond a plane `hair` out from the boundary point (normal `−out`,
+        // so it holds what lies outside the solid there): touching, or an ulp or two apart
+        // either way.
+        let plane: Shape = HalfSpace::new(on + out * hair, -out).unwrap().into();
         agrees(&solid, &plane, 0.0)?;
     }
 }

@@ -56,7 +56,7 @@ fn exact_tangencies_and_one_ulp_either_way() {
             same_as_exact(&solid, &ball(centre, 0.0), radius);
         }
         for scale in [2f64.powi(-300), 2f64.powi(300)] {
-            let moved = ball(centre.map(|v| v * scale), (r * scale).next_down());
+            let moved = ball(centre.map(|v| v * scale), (r * scale).next_down().max(0.0));
             let scaled = match &solid {
                 Shape::Cylinder(c) => cylinder(
                     (c.a().coords * scale).into(),
