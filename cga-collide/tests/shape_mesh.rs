@@ -22,8 +22,11 @@ fn shape() -> impl Strategy<Value = Shape> {
     ]
 }
 
+/// Vertices and index triples, as the strategies draw them.
+type Soup = (Vec<Point3<f64>>, Vec<(usize, usize, usize)>);
+
 /// The triangles of `faces` (indices taken modulo the number of vertices).
-fn soup((vertices, faces): (Vec<Point3<f64>>, Vec<(usize, usize, usize)>)) -> TriMesh {
+fn soup((vertices, faces): Soup) -> TriMesh {
     let n = vertices.len();
     let triangles = faces
         .into_iter()

@@ -120,7 +120,7 @@ pub(super) fn lateral(a: &Body, b: &Body) -> Option<(f64, f64, P3, P3)> {
     let (uw, vw) = (dot(&u, &w), dot(&v, &w));
     let den = uu * vv - uv * uv;
     // Parallel or nearly: no single foot on each axis.
-    if !(den > 1e-12 * uu * vv) {
+    if den.is_nan() || den <= 1e-12 * uu * vv {
         return None;
     }
     let s = (uv * vw - vv * uw) / den;

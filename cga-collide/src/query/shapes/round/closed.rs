@@ -208,7 +208,8 @@ fn nearest_between(p: &P3, q: &P3, a: &P3, b: &P3) -> f64 {
         0.0
     };
     let t = (bb * s + f) / ee;
-    let s = if !(t > 0.0) {
+    // `t` NaN (a zero-length `ab`) takes the first branch too.
+    let s = if t.is_nan() || t <= 0.0 {
         -c / aa
     } else if t > 1.0 {
         (bb - c) / aa
