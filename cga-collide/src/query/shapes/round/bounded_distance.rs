@@ -24,7 +24,7 @@ use nalgebra::Point3;
 
 use super::body::{dot, magnitude, sub, Body, P3};
 use super::filter::{meets, search, search_steps, unit_scale, Found};
-use super::interval::{lift, norm2, sub3, Iv, IvP3};
+use super::interval::{lift, norm2, sub3, IvP3};
 use crate::query::CertifiedDistance;
 use crate::shape::Shape;
 
@@ -224,34 +224,10 @@ fn middle(x: &IvP3) -> P3 {
 
 /// The search's point of `A` (`of_a`) or of `B` as an interval box proved inside the body.
 fn witness(body: &Body, found: &Found, of_a: bool) -> Option<IvP3> {
-    let vertices = &found.vertices[..found.len];
-    let weights: Vec<f64> = found.weights[..found.len]
-        .iter()
-        .map(|w| w.max(0.0))
-        .collect();
-    let total: f64 = weights.iter().sum();
-    if !(total > 0.0 && total.is_finite()) {
-        return None;
+    if let Body::Points(..) = body {
+        return found.exact_point(body, of_a);
     }
-    if let Body::Points(_, boxes) = body {
-        // The exact combination of the vertices divided by the exact sum: in the hull.
-        let mut sum = [Iv::point(0.0); 3];
-        let mut weight = Iv::point(0.0);
-        for (v, &w) in vertices.iter().zip(&weights) {
-            let p = &boxes[if of_a { v.index_a } else { v.index_b }];
-            sum = core::array::from_fn(|k| sum[k].add(Iv::point(w).mul(p[k])));
-            weight = weight.add(Iv::point(w));
-        }
-        return Some(sum.map(|s| s.div_positive(weight)));
-    }
-    let mut x = [0.0; 3];
-    for (v, &w) in vertices.iter().zip(&weights) {
-        let p = if of_a { v.a } else { v.b };
-        for (xk, pk) in x.iter_mut().zip(p) {
-            *xk += w / total * pk;
-        }
-    }
-    let x = lift(&x);
+    let x = lift(&found.point(of_a)?);
     body.holds(&x).then_some(x)
 }
 
@@ -263,13 +239,7 @@ fn common_point(a: &Body, b: &Body) -> Option<P3> {
     }
     let (ka, kb) = (a.max_shrink(), b.max_shrink());
     let found = search(a, 0.25 * ka, b, 0.25 * kb, 0.0);
-    let weights = &found.weights[..found.len];
-    let total: f64 = weights.iter().map(|w| w.max(0.0)).sum();
-    let mut x = [0.0; 3];
-    for (v, &w) in found.vertices[..found.len].iter().zip(weights) {
-        for (k, xk) in x.iter_mut().enumerate() {
-            *xk += w.max(0.0) / total * 0.5 * (v.a[k] + v.b[k]);
-        }
-    }
+    let (xa, xb) = (found.point(true)?, found.point(false)?);
+    let x: P3 = core::array::from_fn(|k| 0.5 * xa[k] + 0.5 * xb[k]);
     x.iter().all(|c| c.is_finite()).then_some(x)
 }

@@ -107,58 +107,27 @@ pub(super) fn meets(a: &Body, b: &Body) -> bool {
 
 /// The search's witness points proved inside both bodies.
 fn common_point(a: &Body, b: &Body, found: &Found) -> bool {
-    let vertices = &found.vertices[..found.len];
-    let weights: Vec<f64> = found.weights[..found.len]
-        .iter()
-        .map(|w| w.max(0.0))
-        .collect();
-    let total: f64 = weights.iter().sum();
-    if !(total > 0.0 && total.is_finite()) {
-        return false;
-    }
-    // A polytope's point: the exact combination of its vertices, divided by the exact sum.
-    let exact = |body: &Body, index: fn(&Vertex) -> usize| -> Option<IvP3> {
-        let Body::Points(_, boxes) = body else {
-            return None;
-        };
-        let mut sum = [Iv::point(0.0); 3];
-        let mut weight = Iv::point(0.0);
-        for (v, &w) in vertices.iter().zip(&weights) {
-            let p = &boxes[index(v)];
-            sum = core::array::from_fn(|k| sum[k].add(Iv::point(w).mul(p[k])));
-            weight = weight.add(Iv::point(w));
-        }
-        Some(sum.map(|s| s.div_positive(weight)))
-    };
-    let approx = |point: fn(&Vertex) -> P3| -> P3 {
-        let mut x = [0.0; 3];
-        for (v, &w) in vertices.iter().zip(&weights) {
-            let p = point(v);
-            for (xk, pk) in x.iter_mut().zip(p) {
-                *xk += w / total * pk;
-            }
-        }
-        x
-    };
-    if let Some(x) = exact(a, |v| v.index_a) {
+    if let Some(x) = found.exact_point(a, true) {
         return b.holds(&x);
     }
-    if let Some(x) = exact(b, |v| v.index_b) {
+    if let Some(x) = found.exact_point(b, false) {
         return a.holds(&x);
     }
-    let (xa, xb) = (approx(|v| v.a), approx(|v| v.b));
+    let (Some(xa), Some(xb)) = (found.point(true), found.point(false)) else {
+        return false;
+    };
     let mid = lift(&core::array::from_fn(|k| 0.5 * xa[k] + 0.5 * xb[k]));
     a.holds(&mid) && b.holds(&mid)
 }
 
 /// One point of the difference `A − B` and the support points it came from.
 #[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Vertex {
+struct Vertex {
     w: P3,
-    pub(super) a: P3,
-    pub(super) index_a: usize,
-    pub(super) b: P3,
-    pub(super) index_b: usize,
+    a: P3,
+    index_a: usize,
+    b: P3,
+    index_b: usize,
 }
 
 /// The search's end: the nearest point `v` of the difference of the last simplex, its squared
@@ -168,9 +137,50 @@ pub(super) struct Found {
     pub(super) v: P3,
     pub(super) norm2: f64,
     lower: f64,
-    pub(super) vertices: [Vertex; 4],
-    pub(super) weights: [f64; 4],
-    pub(super) len: usize,
+    vertices: [Vertex; 4],
+    weights: [f64; 4],
+    len: usize,
+}
+
+impl Found {
+    /// The simplex's weights clamped at `0`, and their sum (`None` unless positive and finite).
+    fn clamped_weights(&self) -> Option<([f64; 4], f64)> {
+        let weights = self.weights.map(|w| w.max(0.0));
+        let total: f64 = weights[..self.len].iter().sum();
+        (total > 0.0 && total.is_finite()).then_some((weights, total))
+    }
+
+    /// The search's point of `A` (`of_a`) or of `B` in plain `f64`: the weighted support
+    /// points. A guide, never a proof.
+    pub(super) fn point(&self, of_a: bool) -> Option<P3> {
+        let (weights, total) = self.clamped_weights()?;
+        let mut x = [0.0; 3];
+        for (v, &w) in self.vertices[..self.len].iter().zip(&weights) {
+            let p = if of_a { v.a } else { v.b };
+            for (xk, pk) in x.iter_mut().zip(p) {
+                *xk += w / total * pk;
+            }
+        }
+        Some(x)
+    }
+
+    /// For a points body (`A` when `of_a`, else `B`), the search's point as the exact convex
+    /// combination of its vertices divided by the exact sum, held in an interval box: proved
+    /// in the hull. `None` for the other bodies.
+    pub(super) fn exact_point(&self, body: &Body, of_a: bool) -> Option<IvP3> {
+        let Body::Points(_, boxes) = body else {
+            return None;
+        };
+        let (weights, _) = self.clamped_weights()?;
+        let mut sum = [Iv::point(0.0); 3];
+        let mut weight = Iv::point(0.0);
+        for (v, &w) in self.vertices[..self.len].iter().zip(&weights) {
+            let p = &boxes[if of_a { v.index_a } else { v.index_b }];
+            sum = core::array::from_fn(|k| sum[k].add(Iv::point(w).mul(p[k])));
+            weight = weight.add(Iv::point(w));
+        }
+        Some(sum.map(|s| s.div_positive(weight)))
+    }
 }
 
 fn vertex(a: &Body, sa: f64, b: &Body, sb: f64, d: &P3) -> Vertex {
